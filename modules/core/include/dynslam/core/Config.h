@@ -1,0 +1,55 @@
+#pragma once
+// ini configuration the MRPT way (CConfigFileBase sections, CLoadableOptions structs), with the
+// two rules this project adds: `--set section.key=value` overrides, and no silent typos (an
+// unknown key or section is an error that names it).
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mrpt::config {
+class CConfigFileBase;
+class CConfigFileMemory;
+class CLoadableOptions;
+}  // namespace mrpt::config
+
+namespace dynslam::core {
+
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// An ini held in memory, remembering where it came from for error messages.
+class IniConfig {
+ public:
+  /// Reads `path` (error naming it when it cannot be read), then applies each override
+  /// "section.key=value" in order.
+  static IniConfig fromFile(const std::string& path, const std::vector<std::string>& overrides = {});
+  static IniConfig fromText(const std::string& text, const std::string& source = "<memory>");
+
+  /// Applies one "section.key=value"; throws ConfigError when it is not of that form.
+  void applyOverride(const std::string& assignment);
+
+  const mrpt::config::CConfigFileBase& ini() const;
+  const std::string& source() const { return source_; }
+  std::vector<std::string> sections() const;
+  std::vector<std::string> keys(const std::string& section) const;
+
+ private:
+  IniConfig(std::shared_ptr<mrpt::config::CConfigFileMemory> mem, std::string source);
+  std::shared_ptr<mrpt::config::CConfigFileMemory> mem_;
+  std::string source_;
+};
+
+/// The keys an options struct knows: those its saveToConfigFile() writes.
+std::vector<std::string> knownKeys(const mrpt::config::CLoadableOptions& options);
+
+/// Loads `options` from `section` after checking that every key the section holds is one
+/// `options` knows; otherwise throws ConfigError naming the key, the section and the source.
+void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,
+                       const std::string& section);
+
+/// Throws ConfigError naming the first section of `cfg` that is not in `known`.
+void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>& known);
+
+}  // namespace dynslam::core

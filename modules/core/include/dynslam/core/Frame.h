@@ -1,0 +1,60 @@
+#pragma once
+// The unit of work that flows through the pipeline: one RGB-D image pair plus everything the
+// other sensors said since the previous one. Stages read what earlier stages wrote and add
+// their own output. Kept free of MRPT headers: every stage includes this file.
+#include <dynslam/core/Trajectory.h>
+
+#include <Eigen/Core>
+#include <opencv2/core/mat.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dynslam::core {
+
+/// Pinhole intrinsics of the colour camera (depth is registered to it), pixels.
+struct CameraIntrinsics {
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+  int width = 0, height = 0;
+};
+
+/// One IMU sample. A device may give only part of it (TUM's accelerometer-only IMU): the
+/// has_* flags say which vectors hold measurements.
+struct ImuSample {
+  double t = 0.0;                              ///< seconds
+  Eigen::Vector3d gyro = Eigen::Vector3d::Zero();  ///< rad/s, IMU frame
+  Eigen::Vector3d acc = Eigen::Vector3d::Zero();   ///< m/s^2, IMU frame, gravity included
+  bool has_gyro = false;
+  bool has_acc = false;
+};
+
+/// One GNSS fix (NMEA GGA) with its position in the local ENU frame whose origin is the first
+/// fix of the run.
+struct GnssFix {
+  double t = 0.0;  ///< seconds
+  double latitude_deg = 0, longitude_deg = 0, altitude_m = 0;
+  int fix_quality = 0;  ///< GGA quality: 0 invalid, 1 GPS, 2 DGPS, 4 RTK fixed, 5 RTK float
+  int satellites = 0;
+  double hdop = 0;
+  Eigen::Vector3d enu = Eigen::Vector3d::Zero();  ///< metres east, north, up from the origin
+};
+
+struct Frame {
+  std::size_t index = 0;  ///< 0-based position in the stream of frames
+  double t = 0.0;         ///< seconds (the RGB-D observation's timestamp)
+  std::string sensor_label;
+
+  cv::Mat rgb;    ///< CV_8UC3, BGR; empty when the observation had no colour image
+  cv::Mat depth;  ///< CV_32FC1, metres along the optical axis, 0 = invalid, registered to rgb
+  CameraIntrinsics intrinsics;
+
+  std::vector<ImuSample> imu;   ///< samples with t in (previous frame's t, t]
+  std::vector<GnssFix> gnss;    ///< fixes with t in (previous frame's t, t]
+
+  /// Camera pose in the world, set by the stage that estimates it.
+  std::optional<Eigen::Isometry3d> T_world_camera;
+};
+
+}  // namespace dynslam::core

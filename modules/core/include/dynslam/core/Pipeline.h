@@ -1,0 +1,53 @@
+#pragma once
+// The configured chain of stages. The ini names them in order:
+//
+//   [pipeline]
+//   stages = HogPeopleDetector, DepthThresholdSegmenter, KalmanBoxTracker
+//
+// Each stage reads the section named after its class. A stage name may carry its own section
+// as "Class:Section" so two instances of one class can be configured apart.
+#include <dynslam/core/Config.h>
+#include <dynslam/core/Frame.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dynslam::core {
+
+class Stage;
+class StageRegistry;
+
+/// Wall-clock time each stage spent on each frame, in milliseconds.
+struct StageTimes {
+  std::string name;
+  std::vector<double> ms;
+};
+
+class Pipeline {
+ public:
+  static constexpr const char* kSection = "pipeline";
+
+  /// Creates and configures the stages that [pipeline] stages lists. Throws ConfigError for an
+  /// unknown class, an unknown key in [pipeline] or in a stage's section.
+  Pipeline(const IniConfig& cfg, const StageRegistry& registry);
+  ~Pipeline();
+  Pipeline(Pipeline&&) noexcept;
+  Pipeline& operator=(Pipeline&&) noexcept;
+
+  void process(Frame& frame);
+  void finish();
+
+  /// Sections the stages read, plus [pipeline] itself (for rejectUnknownSections).
+  std::vector<std::string> sectionsUsed() const;
+  bool estimatesPose() const;
+  bool empty() const { return stages_.empty(); }
+  const std::vector<StageTimes>& times() const { return times_; }
+
+ private:
+  std::vector<std::unique_ptr<Stage>> stages_;
+  std::vector<std::string> sections_;
+  std::vector<StageTimes> times_;
+};
+
+}  // namespace dynslam::core

@@ -1,0 +1,105 @@
+#include "dynslam/core/Config.h"
+
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace dynslam::core {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& i : items) out += (out.empty() ? "" : ", ") + i;
+  return out;
+}
+
+}  // namespace
+
+IniConfig::IniConfig(std::shared_ptr<mrpt::config::CConfigFileMemory> mem, std::string source)
+    : mem_(std::move(mem)), source_(std::move(source)) {}
+
+IniConfig IniConfig::fromFile(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError("cannot read config file '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  IniConfig cfg = fromText(text.str(), path);
+  for (const auto& o : overrides) cfg.applyOverride(o);
+  return cfg;
+}
+
+IniConfig IniConfig::fromText(const std::string& text, const std::string& source) {
+  return IniConfig(std::make_shared<mrpt::config::CConfigFileMemory>(text), source);
+}
+
+void IniConfig::applyOverride(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  const auto dot = assignment.find('.');
+  if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 ||
+      dot + 1 == eq)
+    throw ConfigError("--set '" + assignment + "': expected section.key=value");
+  const std::string section = trim(assignment.substr(0, dot));
+  const std::string key = trim(assignment.substr(dot + 1, eq - dot - 1));
+  mem_->write(section, key, trim(assignment.substr(eq + 1)));
+}
+
+const mrpt::config::CConfigFileBase& IniConfig::ini() const { return *mem_; }
+
+std::vector<std::string> IniConfig::sections() const {
+  std::vector<std::string> s;
+  mem_->getAllSections(s);
+  // simpleini reports the unnamed top-level section as "": not a section a user wrote.
+  s.erase(std::remove(s.begin(), s.end(), std::string()), s.end());
+  return s;
+}
+
+std::vector<std::string> IniConfig::keys(const std::string& section) const {
+  std::vector<std::string> k;
+  mem_->getAllKeys(section, k);
+  for (auto& key : k) key = trim(key);
+  return k;
+}
+
+std::vector<std::string> knownKeys(const mrpt::config::CLoadableOptions& options) {
+  // saveToConfigFile writes every option with its current value, so it is the one list of
+  // keys that cannot drift from what loadFromConfigFile reads (a test checks both agree).
+  mrpt::config::CConfigFileMemory mem;
+  options.saveToConfigFile(mem, "s");
+  std::vector<std::string> keys;
+  mem.getAllKeys("s", keys);
+  for (auto& key : keys) key = trim(key);  // MRPT pads names to align the values
+  return keys;
+}
+
+void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,
+                       const std::string& section) {
+  const auto known = knownKeys(options);
+  for (const auto& key : cfg.keys(section)) {
+    const bool found = std::any_of(known.begin(), known.end(), [&](const std::string& k) {
+      return k == key;
+    });
+    if (!found)
+      throw ConfigError("unknown key '" + key + "' in section [" + section + "] of " +
+                        cfg.source() + "; known keys: " + joined(known));
+  }
+  options.loadFromConfigFile(cfg.ini(), section);
+}
+
+void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>& known) {
+  for (const auto& s : cfg.sections())
+    if (std::find(known.begin(), known.end(), s) == known.end())
+      throw ConfigError("unknown section [" + s + "] in " + cfg.source() +
+                        " (no configured stage reads it); known sections: " + joined(known));
+}
+
+}  // namespace dynslam::core

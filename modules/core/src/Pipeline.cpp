@@ -1,0 +1,72 @@
+#include "dynslam/core/Pipeline.h"
+
+#include "dynslam/core/StageRegistry.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <chrono>
+#include <sstream>
+
+namespace dynslam::core {
+namespace {
+
+/// "A, B:sec  C" -> {"A", "B:sec", "C"}: commas and white space both separate.
+std::vector<std::string> splitList(std::string text) {
+  for (char& c : text)
+    if (c == ',') c = ' ';
+  std::istringstream in(text);
+  std::vector<std::string> items;
+  for (std::string item; in >> item;) items.push_back(item);
+  return items;
+}
+
+}  // namespace
+
+Pipeline::Pipeline(const IniConfig& cfg, const StageRegistry& registry) {
+  for (const auto& key : cfg.keys(kSection))
+    if (key != "stages")
+      throw ConfigError("unknown key '" + key + "' in section [pipeline] of " + cfg.source() +
+                        "; known keys: stages");
+  for (const auto& entry : splitList(cfg.ini().read_string(kSection, "stages", ""))) {
+    const auto colon = entry.find(':');
+    const std::string className = entry.substr(0, colon);
+    const std::string section = colon == std::string::npos ? entry : entry.substr(colon + 1);
+    auto stage = registry.create(className);
+    stage->setLoggerName(section);
+    stage->configure(cfg, section);
+    stages_.push_back(std::move(stage));
+    sections_.push_back(section);
+    times_.push_back({section, {}});
+  }
+}
+
+Pipeline::~Pipeline() = default;
+Pipeline::Pipeline(Pipeline&&) noexcept = default;
+Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
+
+void Pipeline::process(Frame& frame) {
+  using Clock = std::chrono::steady_clock;
+  for (size_t i = 0; i < stages_.size(); ++i) {
+    const auto start = Clock::now();
+    stages_[i]->process(frame);
+    times_[i].ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+}
+
+void Pipeline::finish() {
+  for (auto& s : stages_) s->finish();
+}
+
+std::vector<std::string> Pipeline::sectionsUsed() const {
+  std::vector<std::string> s = sections_;
+  s.push_back(kSection);
+  return s;
+}
+
+bool Pipeline::estimatesPose() const {
+  for (const auto& s : stages_)
+    if (s->estimatesPose()) return true;
+  return false;
+}
+
+}  // namespace dynslam::core

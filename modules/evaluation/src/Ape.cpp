@@ -1,0 +1,30 @@
+#include "dynslam/evaluation/Ape.h"
+
+#include "dynslam/evaluation/EvaluationError.h"
+
+namespace dynslam::evaluation {
+
+std::vector<double> computeApe(const core::Trajectory& ref, const core::Trajectory& est,
+                               PoseRelation relation) {
+  if (ref.size() != est.size())
+    throw EvaluationError("APE needs trajectories with the same number of poses (" +
+                          std::to_string(ref.size()) + " vs " + std::to_string(est.size()) + ")");
+  if (ref.empty()) throw EvaluationError("APE of empty trajectories");
+
+  std::vector<double> errors;
+  errors.reserve(ref.size());
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    if (relation == PoseRelation::TranslationPart) {
+      // evo takes the position difference directly (no full error pose needed).
+      errors.push_back(
+          (est[i].T_world_body.translation() - ref[i].T_world_body.translation()).norm());
+    } else {
+      // E = P^-1 * Q: the reference pose seen from the estimated one.
+      errors.push_back(poseError(
+          relativePose(est[i].T_world_body.matrix(), ref[i].T_world_body.matrix()), relation));
+    }
+  }
+  return errors;
+}
+
+}  // namespace dynslam::evaluation

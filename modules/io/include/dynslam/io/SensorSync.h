@@ -1,0 +1,79 @@
+#pragma once
+// Turns the observation stream of a rawlog into Frames: one per RGB-D observation, carrying the
+// IMU samples and GNSS fixes with timestamps in (previous frame, this frame]. A frame is handed
+// out once an observation later than it arrives (or the stream ends), so samples stamped at
+// the frame's own time are never lost to file order.
+#include <dynslam/core/Config.h>
+#include <dynslam/core/Frame.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/obs/CObservation.h>
+
+#include <deque>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dynslam::io {
+
+/// Bad stream order (a sensor's time going backwards, a sample arriving after the frame it
+/// belongs to was handed out). The message names the observation and both timestamps.
+struct SyncError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct SensorSyncOptions : mrpt::config::CLoadableOptions {
+  std::string camera_label;  ///< sensorLabel of the RGB-D camera; "" takes any
+  std::string imu_label;     ///< sensorLabel of the IMU; "" takes any
+  std::string gnss_label;    ///< sensorLabel of the GNSS receiver; "" takes any
+  bool skip_frames_without_depth = false;  ///< false: a frame with no depth is an error
+  int min_gnss_fix_quality = 1;            ///< GGA fixes below this quality are dropped
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/// What the stream held, for the run summary.
+struct SyncCounts {
+  size_t observations = 0;
+  size_t rgbd = 0, imu = 0, gnss = 0;
+  size_t gnss_dropped = 0;   ///< no GGA, or quality below min_gnss_fix_quality
+  size_t other = 0;          ///< observation types or labels the pipeline does not use
+  size_t frames = 0;
+  size_t frames_without_depth = 0;
+  std::map<std::string, size_t> by_type;  ///< class name -> count
+};
+
+class SensorSync {
+ public:
+  static constexpr const char* kSection = "SensorSync";
+
+  explicit SensorSync(SensorSyncOptions options = {});
+
+  /// Takes the next observation of the stream; frames that became complete go to `out`.
+  void push(const mrpt::obs::CObservation::Ptr& obs, std::vector<core::Frame>& out);
+  /// End of stream: hands out the frames still waiting.
+  void flush(std::vector<core::Frame>& out);
+
+  const SyncCounts& counts() const { return counts_; }
+  /// Latitude, longitude (deg) and altitude (m) of the ENU origin, once a fix was seen.
+  std::optional<Eigen::Vector3d> gnssOrigin() const { return origin_; }
+
+ private:
+  void emitUpTo(double t, std::vector<core::Frame>& out);
+  void emit(core::Frame& frame, std::vector<core::Frame>& out);
+  void checkOrder(const mrpt::obs::CObservation& obs, double t, bool strictly_increasing);
+
+  SensorSyncOptions options_;
+  SyncCounts counts_;
+  std::deque<core::Frame> waiting_;
+  std::deque<core::ImuSample> imu_;
+  std::deque<core::GnssFix> gnss_;
+  std::map<std::string, double> last_t_;  // per sensor
+  std::optional<double> last_frame_t_;    // last frame handed out
+  std::optional<Eigen::Vector3d> origin_;
+};
+
+}  // namespace dynslam::io

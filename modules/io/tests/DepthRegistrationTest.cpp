@@ -1,0 +1,61 @@
+#include <dynslam/io/DepthRegistration.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+using namespace dynslam;
+
+namespace {
+core::CameraIntrinsics camera(int w, int h, double f) {
+  core::CameraIntrinsics k;
+  k.fx = k.fy = f;
+  k.cx = (w - 1) / 2.0;
+  k.cy = (h - 1) / 2.0;
+  k.width = w;
+  k.height = h;
+  return k;
+}
+}  // namespace
+
+TEST(DepthRegistration, IdentityKeepsTheImage) {
+  const auto k = camera(40, 30, 50);
+  cv::Mat d(30, 40, CV_32FC1, cv::Scalar(2.0f));
+  d.at<float>(5, 7) = 0;  // a hole stays a hole
+  const cv::Mat r = io::registerDepth(d, k, k, Eigen::Isometry3d::Identity());
+  EXPECT_EQ(cv::norm(r, d, cv::NORM_INF), 0.0);
+}
+
+TEST(DepthRegistration, SidewaysShiftMovesPixelsByFocalTimesBaselineOverDepth) {
+  const auto k = camera(40, 30, 50);
+  cv::Mat d(30, 40, CV_32FC1, cv::Scalar(0.0f));
+  d.at<float>(15, 20) = 2.0f;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = Eigen::Vector3d(0.2, 0, 0.5);  // target camera 0.2 m left, 0.5 m back
+  const cv::Mat r = io::registerDepth(d, k, k, T);
+  // x = 0.2 * ... : point (u=20 -> x = (20-19.5)/50*2 = 0.02) maps to x' = 0.22, z' = 2.5
+  // u' = 50 * 0.22 / 2.5 + 19.5 = 23.9 -> 24; v' = 50 * (0.5/50*2) / 2.5 + 14.5 = 14.9 -> 15
+  EXPECT_FLOAT_EQ(r.at<float>(15, 24), 2.5f);
+  EXPECT_EQ(cv::countNonZero(r), 1);
+}
+
+TEST(DepthRegistration, NearestPointWinsWhereTwoLand) {
+  const auto k = camera(40, 30, 50);
+  cv::Mat d(30, 40, CV_32FC1, cv::Scalar(0.0f));
+  d.at<float>(15, 20) = 2.0f;
+  d.at<float>(15, 21) = 1.0f;
+  // A camera with a tenth of the focal length maps both neighbours onto one pixel.
+  const auto small = camera(10, 8, 5);
+  const cv::Mat r = io::registerDepth(d, k, small, Eigen::Isometry3d::Identity());
+  double mn = 0, mx = 0;
+  cv::minMaxLoc(r, &mn, &mx);
+  EXPECT_FLOAT_EQ(static_cast<float>(mx), 1.0f);
+  EXPECT_EQ(cv::countNonZero(r), 1);
+}
+
+TEST(DepthRegistration, RangesBecomeDepthsAlongTheAxis) {
+  const auto k = camera(3, 1, 1);  // cx = 1: pixel 0 and 2 are 45 degrees off-axis
+  cv::Mat r(1, 3, CV_32FC1, cv::Scalar(std::sqrt(2.0f)));
+  io::rangesToDepths(r, k);
+  EXPECT_NEAR(r.at<float>(0, 0), 1.0f, 1e-6);
+  EXPECT_NEAR(r.at<float>(0, 1), std::sqrt(2.0f), 1e-6);
+}

@@ -1,0 +1,50 @@
+#pragma once
+// Dense RGB-D odometry (OpenCV rgbd: photometric + ICP alignment) tracked against a keyframe,
+// which drifts less than chaining frame-to-frame motions. It sees the whole image, moving
+// people included: it is the "no dynamic handling" baseline and a pose source for RGB-D only
+// runs until the factor-graph estimator exists.
+#include <dynslam/core/Stage.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <memory>
+
+namespace dynslam::odometry {
+
+struct RgbdOdometryOptions : mrpt::config::CLoadableOptions {
+  std::string method = "rgbd_icp";   ///< rgbd_icp | rgbd | icp
+  double min_depth = 0.3;            ///< m; nearer pixels are not used
+  double max_depth = 4.0;            ///< m; farther pixels are not used
+  double max_depth_diff = 0.07;      ///< m; correspondences differing more are rejected
+  double max_points_part = 0.07;     ///< fraction of pixels sampled per iteration
+  double keyframe_translation = 0.10;   ///< m from the keyframe that starts a new one
+  double keyframe_rotation_deg = 10.0;  ///< degrees from the keyframe that start a new one
+  double max_translation = 0.5;      ///< m; larger estimated motions count as failures
+  double max_rotation_deg = 30.0;    ///< degrees; larger estimated motions count as failures
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+class RgbdOdometryStage : public core::Stage {
+ public:
+  RgbdOdometryStage();
+  ~RgbdOdometryStage() override;
+
+  void configure(const core::IniConfig& cfg, const std::string& section) override;
+  void process(core::Frame& frame) override;
+  void finish() override;
+  bool estimatesPose() const override { return true; }
+
+  const RgbdOdometryOptions& options() const { return options_; }
+  size_t failures() const { return failures_; }
+  size_t keyframes() const { return keyframes_; }
+
+ private:
+  struct Impl;
+  RgbdOdometryOptions options_;
+  std::unique_ptr<Impl> impl_;
+  size_t failures_ = 0, keyframes_ = 0, frames_ = 0;
+};
+
+}  // namespace dynslam::odometry

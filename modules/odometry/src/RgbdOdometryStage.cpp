@@ -1,0 +1,175 @@
+#include "dynslam/odometry/RgbdOdometryStage.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/rgbd.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <optional>
+
+namespace dynslam::odometry {
+namespace {
+
+cv::Mat toCv(const Eigen::Isometry3d& T) {
+  cv::Mat m(4, 4, CV_64FC1);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m.at<double>(r, c) = T.matrix()(r, c);
+  return m;
+}
+
+/// The rigid motion in a 4x4 CV_64F matrix, or nullopt when its rotation is not one: OpenCV
+/// can return a diverged, non-orthonormal matrix even when it reports success, and one such
+/// matrix poisons every later pose (Isometry3d::inverse assumes orthonormality).
+std::optional<Eigen::Isometry3d> rigidMotion(const cv::Mat& m) {
+  if (m.rows != 4 || m.cols != 4 || m.type() != CV_64FC1) return std::nullopt;
+  Eigen::Matrix4d M;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) M(r, c) = m.at<double>(r, c);
+  const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
+  if (!M.allFinite() || (R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
+      R.determinant() < 0)
+    return std::nullopt;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(R).normalized().toRotationMatrix();
+  T.translation() = M.topRightCorner<3, 1>();
+  return T;
+}
+
+double rotationDeg(const Eigen::Isometry3d& T) {
+  return Eigen::AngleAxisd(T.rotation()).angle() * 180.0 / M_PI;
+}
+
+}  // namespace
+
+void RgbdOdometryOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                             const std::string& s) {
+  MRPT_LOAD_CONFIG_VAR(method, string, c, s);
+  MRPT_LOAD_CONFIG_VAR(min_depth, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_depth, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_depth_diff, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_points_part, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(keyframe_translation, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(keyframe_rotation_deg, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_translation, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(max_rotation_deg, double, c, s);
+}
+
+void RgbdOdometryOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                           const std::string& s) const {
+  MRPT_SAVE_CONFIG_VAR_COMMENT(method, "rgbd_icp | rgbd (photometric) | icp (geometric)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(min_depth, "m; nearer pixels are not used");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth, "m; farther pixels are not used");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth_diff, "m; correspondences differing more are rejected");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_points_part, "fraction of pixels sampled per iteration");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(keyframe_translation, "m from the keyframe that start a new one");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(keyframe_rotation_deg, "deg from the keyframe that start a new one");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_translation, "m; a larger estimated motion is a failure");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_rotation_deg, "deg; a larger estimated motion is a failure");
+}
+
+struct RgbdOdometryStage::Impl {
+  cv::Ptr<cv::rgbd::Odometry> odometry;
+  cv::Ptr<cv::rgbd::OdometryFrame> keyframe;
+  Eigen::Isometry3d T_world_keyframe = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d T_keyframe_last = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d T_world_last = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d last_motion = Eigen::Isometry3d::Identity();  // previous -> current
+};
+
+RgbdOdometryStage::RgbdOdometryStage() : impl_(std::make_unique<Impl>()) {}
+RgbdOdometryStage::~RgbdOdometryStage() = default;
+
+void RgbdOdometryStage::configure(const core::IniConfig& cfg, const std::string& section) {
+  core::loadOptionsStrict(options_, cfg, section);
+  const auto& o = options_;
+  const cv::Mat noK;  // the camera matrix is set from the first frame's intrinsics
+  if (o.method == "rgbd_icp")
+    impl_->odometry = cv::rgbd::RgbdICPOdometry::create(noK, o.min_depth, o.max_depth,
+                                                        o.max_depth_diff, o.max_points_part);
+  else if (o.method == "rgbd")
+    impl_->odometry =
+        cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff);
+  else if (o.method == "icp")
+    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth,
+                                                    o.max_depth_diff, o.max_points_part);
+  else
+    throw core::ConfigError("[" + section + "] method = '" + o.method + "' in " + cfg.source() +
+                            ": expected rgbd_icp, rgbd or icp");
+}
+
+void RgbdOdometryStage::process(core::Frame& frame) {
+  auto& s = *impl_;
+  if (frame.depth.empty())
+    throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
+                             " has no depth");
+  cv::Mat grey;
+  if (!frame.rgb.empty())
+    cv::cvtColor(frame.rgb, grey, cv::COLOR_BGR2GRAY);
+  else if (options_.method != "icp")
+    throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
+                             " has no colour image; method = icp works on depth alone");
+  else
+    grey = cv::Mat(frame.depth.size(), CV_8UC1, cv::Scalar(0));
+
+  // A frame used as the source of compute() is not reusable as a destination (OpenCV keeps
+  // source-only data in its cache), so a keyframe always gets a frame object of its own.
+  const auto makeKeyframe = [&] {
+    auto kf = cv::rgbd::OdometryFrame::create(grey, frame.depth);
+    s.odometry->prepareFrameCache(kf, cv::rgbd::OdometryFrame::CACHE_DST);
+    return kf;
+  };
+  if (!s.keyframe) {
+    const auto& k = frame.intrinsics;
+    s.odometry->setCameraMatrix(
+        (cv::Mat_<double>(3, 3) << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1));
+    s.keyframe = makeKeyframe();
+    ++keyframes_;
+    ++frames_;
+    frame.T_world_camera = Eigen::Isometry3d::Identity();
+    return;
+  }
+
+  // Predict with constant velocity; it is the initial guess and the fallback on failure.
+  const Eigen::Isometry3d predicted = s.T_keyframe_last * s.last_motion;
+  auto current = cv::rgbd::OdometryFrame::create(grey, frame.depth);
+  cv::Mat Rt;
+  const bool converged = s.odometry->compute(current, s.keyframe, Rt, toCv(predicted));
+  const auto measured = converged ? rigidMotion(Rt) : std::nullopt;  // keyframe <- current
+  bool ok = measured.has_value();
+  Eigen::Isometry3d T_keyframe_current = ok ? *measured : predicted;
+  const Eigen::Isometry3d step = s.T_keyframe_last.inverse() * T_keyframe_current;
+  if (ok && (step.translation().norm() > options_.max_translation ||
+             rotationDeg(step) > options_.max_rotation_deg)) {
+    ok = false;
+    T_keyframe_current = predicted;
+  }
+  if (!ok) {
+    ++failures_;
+    MRPT_LOG_WARN_STREAM("frame " << frame.index << ": odometry failed; using the prediction");
+  }
+
+  const Eigen::Isometry3d T_world_current = s.T_world_keyframe * T_keyframe_current;
+  // After a failure the motion is unknown: extrapolating the guess again would compound it.
+  s.last_motion = ok ? s.T_world_last.inverse() * T_world_current : Eigen::Isometry3d::Identity();
+  s.T_world_last = T_world_current;
+  s.T_keyframe_last = T_keyframe_current;
+  if (!ok || T_keyframe_current.translation().norm() > options_.keyframe_translation ||
+      rotationDeg(T_keyframe_current) > options_.keyframe_rotation_deg) {
+    s.keyframe = makeKeyframe();
+    s.T_world_keyframe = T_world_current;
+    s.T_keyframe_last = Eigen::Isometry3d::Identity();
+    ++keyframes_;
+  }
+  ++frames_;
+  frame.T_world_camera = T_world_current;
+}
+
+void RgbdOdometryStage::finish() {
+  MRPT_LOG_INFO_STREAM(frames_ << " frames, " << keyframes_ << " keyframes, " << failures_
+                               << " failures");
+}
+
+}  // namespace dynslam::odometry

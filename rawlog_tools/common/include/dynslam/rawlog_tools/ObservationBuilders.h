@@ -1,0 +1,57 @@
+#pragma once
+// Builds the MRPT observations the converters write. MRPT types are only forward-declared
+// here; include <mrpt/obs/CObservation3DRangeScan.h> / <mrpt/obs/CObservationIMU.h> where
+// their fields are used.
+#include <dynslam/rawlog_tools/ColourImageStore.h>
+#include <mrpt/core/Clock.h>
+#include <opencv2/core/mat.hpp>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace mrpt::obs {
+class CObservation3DRangeScan;
+class CObservationIMU;
+}  // namespace mrpt::obs
+
+namespace dynslam::rawlog_tools {
+
+struct PinholeIntrinsics {
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+};
+
+/// One registered colour + depth frame.
+struct RgbdFrame {
+  mrpt::Clock::time_point timestamp;
+  std::string sensorLabel;
+  /// Raw depth, CV_16UC1, 0 = invalid; metres = value * rangeUnits.
+  cv::Mat depth;
+  /// Raw depth value that also means "invalid" in the source (7-Scenes: 65535); written as 0.
+  std::optional<uint16_t> invalidDepthValue;
+  float rangeUnits = 0.001f;
+  /// Depth beyond this is not trusted by MRPT consumers (CObservation3DRangeScan::maxRange).
+  float maxRange = 10.0f;
+  /// Used for both the depth and the colour camera: depth is registered to colour.
+  PinholeIntrinsics intrinsics;
+  StoredColourImage colour;
+  /// Names the depth source in error messages (e.g. the PNG path).
+  std::string depthSourceName;
+};
+
+/// range_is_depth = true, hasRangeImage = hasIntensityImage = true, cameraParams and
+/// cameraParamsIntensity carry the same intrinsics and their image sizes;
+/// relativePoseIntensityWRTDepth keeps MRPT's default (the cameras coincide).
+/// Throws ConversionError when depth is not CV_16UC1 or its size differs from the colour image.
+std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const RgbdFrame& frame);
+
+/// An IMU observation with only the given groups set: has(IMU_WX) is false without gyro.
+/// gyro in rad/s (IMU_WX..WZ), acc in m/s^2 (IMU_X_ACC..Z_ACC); sensorPose stays identity.
+std::shared_ptr<mrpt::obs::CObservationIMU> makeImuObservation(
+    mrpt::Clock::time_point timestamp, const std::string& sensorLabel,
+    const std::optional<std::array<double, 3>>& gyro,
+    const std::optional<std::array<double, 3>>& acc);
+
+}  // namespace dynslam::rawlog_tools

@@ -1,0 +1,115 @@
+// sevenscenes2rawlog: converts a 7-Scenes sequence folder into an observations-only MRPT
+// rawlog of RGB-D observations, plus its ground truth as TUM.
+#include "SevenScenesFolder.h"
+
+#include <dynslam/core/TrajectoryFile.h>
+#include <dynslam/rawlog_tools/ColourImageStore.h>
+#include <dynslam/rawlog_tools/CommandLine.h>
+#include <dynslam/rawlog_tools/ConversionError.h>
+#include <dynslam/rawlog_tools/ObservationBuilders.h>
+#include <dynslam/rawlog_tools/OutputPaths.h>
+#include <dynslam/rawlog_tools/RawlogWriter.h>
+#include <dynslam/rawlog_tools/SensorLabels.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <iostream>
+
+namespace fs = std::filesystem;
+using namespace dynslam::rawlog_tools;
+
+namespace {
+
+constexpr const char* kUsage = R"(Usage: sevenscenes2rawlog --in DIR --out FILE.rawlog [options]
+
+Converts a Microsoft 7-Scenes sequence folder (frame-NNNNNN.color.jpg / .depth.png /
+.pose.txt, camera-intrinsics.txt) into an MRPT rawlog of CObservation3DRangeScan ("RGBD")
+observations: depth raw uint16 millimetres (rangeUnits = 1/1000; 65535 = invalid becomes 0),
+colour and depth sharing the intrinsics of camera-intrinsics.txt. The camera-to-world poses
+are written as TUM to <stem>.gt.tum beside FILE, with the frames' time stamps.
+
+7-Scenes has no time stamps: frame N gets t0 + N/30 s (30 Hz), whatever --first is, so the
+same frame has the same stamp in every converted range. The default t0 is the fixed Unix time
+1600000000 (2020-09-13 12:26:40 UTC), not 0: MRPT reads a time of 0.0 as "no time stamp"
+(Clock::toDouble gives 0 for invalid stamps; rawlog-edit --info skips such a frame).
+
+Options:
+  --in DIR            sequence folder
+  --out FILE.rawlog   output rawlog; colour images go to <stem>_Images/ beside it
+  --first N           first frame number (default 0)
+  --last M            last frame number, inclusive (default: the last frame in DIR)
+  --t0 SECONDS        time stamp of frame 0 (default 1600000000; must be > 0)
+  --embed-images      store colour pixels inside the rawlog instead of <stem>_Images/
+  --help              this text
+)";
+
+constexpr double kFrameRate = 30.0;
+constexpr double kDefaultT0 = 1600000000.0;
+constexpr uint16_t kInvalidDepth = 65535;
+
+int convert(const CommandLine& args) {
+  const std::string inDir = args.required("--in");
+  if (!fs::is_directory(inDir)) throw ConversionError("input folder " + inDir + " does not exist");
+  const RawlogOutputPaths out = rawlogOutputPaths(args.required("--out"));
+  const double t0 = args.optionalDouble("--t0").value_or(kDefaultT0);
+  if (t0 <= 0) throw ConversionError("--t0 must be > 0 (MRPT reads time 0 as 'no time stamp')");
+  const long long first = args.optionalInteger("--first").value_or(0);
+  const long long lastInDir = sevenscenes::lastFrameIndex(inDir);
+  const long long last = args.has("--last") ? *args.optionalInteger("--last") : lastInDir;
+  if (first < 0) throw ConversionError("--first must be >= 0");
+  if (last < first)
+    throw ConversionError("no frames to convert: --first " + std::to_string(first) +
+                          " is after the last frame " + std::to_string(last));
+  // Checked before converting anything, so a range typo fails at once, not after minutes.
+  if (last > lastInDir)
+    throw ConversionError(sevenscenes::framePaths(inDir, last).colour + " does not exist (the " +
+                          "last frame in " + inDir + " is " + std::to_string(lastInDir) + ")");
+  const PinholeIntrinsics intrinsics = sevenscenes::readIntrinsics(inDir);
+
+  ColourImageStore images(args.has("--embed-images") ? ImageStorage::Embedded
+                                                      : ImageStorage::External,
+                          out.imagesDir);
+  RawlogWriter writer(out.rawlog);
+  dynslam::core::Trajectory groundTruth;
+  for (long long index = first; index <= last; ++index) {
+    const sevenscenes::FramePaths paths = sevenscenes::framePaths(inDir, index);
+    const double t = t0 + static_cast<double>(index) / kFrameRate;
+    RgbdFrame frame;
+    frame.timestamp = mrpt::Clock::fromDouble(t);
+    frame.sensorLabel = kRgbdLabel;
+    frame.depthSourceName = paths.depth;
+    if (!fs::is_regular_file(paths.depth))
+      throw ConversionError("depth image " + paths.depth + " does not exist");
+    frame.depth = cv::imread(paths.depth, cv::IMREAD_UNCHANGED);
+    if (frame.depth.empty()) throw ConversionError("cannot read depth image " + paths.depth);
+    frame.invalidDepthValue = kInvalidDepth;
+    frame.rangeUnits = 1.0f / 1000.0f;
+    frame.intrinsics = intrinsics;
+    frame.colour = images.storeFile(paths.colour, fs::path(paths.colour).stem().string());
+    groundTruth.push_back({t, sevenscenes::readPose(paths.pose)});
+    writer.write(*makeRgbdObservation(frame));
+  }
+  writer.close();
+  dynslam::core::writeTum(out.groundTruth, groundTruth);
+
+  std::cout << "wrote " << writer.written() << " " << kRgbdLabel << " observations (frames "
+            << first << ".." << last << ", intrinsics fx " << intrinsics.fx << " fy "
+            << intrinsics.fy << " cx " << intrinsics.cx << " cy " << intrinsics.cy << ") to "
+            << out.rawlog << "\nground truth: " << out.groundTruth << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return runConverter("sevenscenes2rawlog", [&] {
+    CommandLine args({"--in", "--out", "--first", "--last", "--t0"}, {"--embed-images"});
+    args.parse(argc, argv);
+    if (args.helpRequested()) {
+      std::cout << kUsage;
+      return 0;
+    }
+    return convert(args);
+  });
+}

@@ -1,0 +1,267 @@
+// dynslam-eval: APE / RPE of an estimated trajectory against a reference, with the definitions
+// of evo (github.com/MichaelGrupp/evo) so that figures can be compared with published ones.
+// Exit codes: 0 success, 1 bad data (unreadable file, nothing to associate, ...), 2 usage.
+#include <dynslam/core/CommandLine.h>
+#include <dynslam/core/JsonWriter.h>
+#include <dynslam/core/TrajectoryFile.h>
+#include <dynslam/evaluation/Alignment.h>
+#include <dynslam/evaluation/Ape.h>
+#include <dynslam/evaluation/Association.h>
+#include <dynslam/evaluation/EvaluationError.h>
+#include <dynslam/evaluation/Plot.h>
+#include <dynslam/evaluation/Rpe.h>
+#include <dynslam/evaluation/Statistics.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using dynslam::core::TrajectoryFormat;
+namespace ev = dynslam::evaluation;
+
+const char* const kUsage = R"(usage:
+  dynslam-eval ape REF EST [options]
+  dynslam-eval rpe REF EST [options] [--delta N] [--delta-unit f|m] [--all-pairs] [--delta-tol X]
+
+Computes evo's absolute (ape) or relative (rpe) pose error of the estimate EST against the
+reference REF and prints the pairs, the alignment and rmse, mean, median, std, min, max, sse.
+
+options:
+  --format tum|kitti|euroc   format of both files (default tum)
+  --ref-format F             format of REF only (e.g. euroc ground truth with a tum estimate)
+  --est-format F             format of EST only
+  --align none|se3|sim3      Umeyama alignment of EST to REF before the errors (default none)
+  --align-origin             move EST so that its first pose is REF's first pose (after --align)
+  --t-max-diff S             max. time difference of associated poses, seconds (default 0.01)
+  --t-offset S               constant offset added to EST's timestamps, seconds (default 0)
+  --pose-relation R          trans|rot|full|angle_deg|angle_rad (default trans)
+  --json FILE                write {"rmse", "mean", "median", "std", "min", "max", "sse"}
+  --plot FILE.png            write a top view of both paths and the error over time
+  --plot-plane xy|xz|yz      coordinates of the top view (default xy)
+  -h, --help                 show this text
+rpe options:
+  --delta N                  distance between the poses of a pair (default 1)
+  --delta-unit f|m           N in frames or in metres of travelled path (default f)
+  --all-pairs                use every pair at distance N, not only consecutive ones
+  --delta-tol X              relative tolerance of --all-pairs with metres (default 0.1)
+  --pairs-from-reference     choose the pairs on REF's path (default: on EST's, as evo does)
+
+Poses are associated by timestamp (tum, euroc) like evo, or by index when a file is kitti
+(the files must then hold as many poses).
+)";
+
+using dynslam::core::UsageError;
+
+struct Options {
+  std::string command, ref_path, est_path;
+  TrajectoryFormat ref_format = TrajectoryFormat::Tum, est_format = TrajectoryFormat::Tum;
+  ev::AlignmentMode align = ev::AlignmentMode::None;
+  bool align_origin = false;
+  double t_max_diff = 0.01, t_offset = 0.0;
+  ev::PoseRelation relation = ev::PoseRelation::TranslationPart;
+  std::string json_path, plot_path;
+  ev::PlotPlane plot_plane = ev::PlotPlane::XY;
+  ev::RpeOptions rpe;
+};
+
+/// Parses a flag's value with `parse` when the flag is given, turning std::invalid_argument
+/// into a usage error that names the flag.
+template <typename T, typename Parse>
+void parseChoice(const dynslam::core::CommandLine& cl, const std::string& flag, T& target,
+                 Parse parse) {
+  if (!cl.has(flag)) return;
+  try {
+    target = parse(cl.valueOr(flag, ""));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("flag " + flag + ": " + e.what());
+  }
+}
+
+Options parseArguments(const dynslam::core::CommandLine& cl) {
+  Options o;
+  const auto& positional = cl.positional();
+  if (positional.size() != 3)
+    throw UsageError("expected a command and two files (ape|rpe REF EST), got " +
+                     std::to_string(positional.size()) + " arguments");
+  o.command = positional[0];
+  if (o.command != "ape" && o.command != "rpe")
+    throw UsageError("unknown command '" + o.command + "' (expected ape or rpe)");
+  o.ref_path = positional[1];
+  o.est_path = positional[2];
+
+  TrajectoryFormat both = TrajectoryFormat::Tum;
+  parseChoice(cl, "--format", both, dynslam::core::parseTrajectoryFormat);
+  o.ref_format = o.est_format = both;
+  parseChoice(cl, "--ref-format", o.ref_format, dynslam::core::parseTrajectoryFormat);
+  parseChoice(cl, "--est-format", o.est_format, dynslam::core::parseTrajectoryFormat);
+  parseChoice(cl, "--align", o.align, ev::parseAlignmentMode);
+  parseChoice(cl, "--pose-relation", o.relation, ev::parsePoseRelation);
+  parseChoice(cl, "--plot-plane", o.plot_plane, ev::parsePlotPlane);
+  parseChoice(cl, "--delta-unit", o.rpe.delta_unit, ev::parseDeltaUnit);
+  o.align_origin = cl.has("--align-origin");
+  o.t_max_diff = cl.optionalDouble("--t-max-diff").value_or(o.t_max_diff);
+  o.t_offset = cl.optionalDouble("--t-offset").value_or(o.t_offset);
+  o.json_path = cl.valueOr("--json", "");
+  o.plot_path = cl.valueOr("--plot", "");
+  o.rpe.delta = cl.optionalDouble("--delta").value_or(o.rpe.delta);
+  o.rpe.rel_delta_tol = cl.optionalDouble("--delta-tol").value_or(o.rpe.rel_delta_tol);
+  o.rpe.all_pairs = cl.has("--all-pairs");
+  o.rpe.pairs_from_reference = cl.has("--pairs-from-reference");
+  o.rpe.relation = o.relation;
+
+  if (o.command == "ape") {
+    for (const char* flag : {"--delta", "--delta-unit", "--all-pairs", "--delta-tol",
+                             "--pairs-from-reference"})
+      if (cl.has(flag)) throw UsageError(std::string("flag ") + flag + " only applies to rpe");
+  }
+  if (o.t_max_diff < 0.0) throw UsageError("flag --t-max-diff must be >= 0");
+  if (!(o.rpe.delta > 0.0)) throw UsageError("flag --delta must be > 0");
+  if (o.rpe.delta_unit == ev::DeltaUnit::Frames && o.rpe.delta != std::floor(o.rpe.delta))
+    throw UsageError("flag --delta must be a whole number of frames with --delta-unit f");
+  if (o.rpe.rel_delta_tol < 0.0) throw UsageError("flag --delta-tol must be >= 0");
+  return o;
+}
+
+/// Shortest text that reads back as the same double (what Python prints).
+std::string fullPrecision(double v) {
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+}
+
+const char* formatName(TrajectoryFormat f) {
+  return f == TrajectoryFormat::Tum ? "tum" : f == TrajectoryFormat::Kitti ? "kitti" : "euroc";
+}
+
+void printAlignment(const ev::AlignmentResult& a) {
+  std::cout << "alignment   " << ev::toString(a.mode) << (a.origin_aligned ? " + origin" : "")
+            << '\n';
+  if (a.mode != ev::AlignmentMode::None) {
+    const auto& r = a.umeyama.rotation;
+    for (int row = 0; row < 3; ++row)
+      std::cout << (row == 0 ? "rotation    " : "            ") << fullPrecision(r(row, 0)) << ' '
+                << fullPrecision(r(row, 1)) << ' ' << fullPrecision(r(row, 2)) << '\n';
+    const auto& t = a.umeyama.translation;
+    std::cout << "translation " << fullPrecision(t.x()) << ' ' << fullPrecision(t.y()) << ' '
+              << fullPrecision(t.z()) << '\n'
+              << "scale       " << fullPrecision(a.umeyama.scale) << '\n';
+  }
+  if (a.origin_aligned) {
+    const Eigen::Matrix4d m = a.origin_transform.matrix();
+    for (int row = 0; row < 3; ++row)
+      std::cout << (row == 0 ? "origin      " : "            ") << fullPrecision(m(row, 0)) << ' '
+                << fullPrecision(m(row, 1)) << ' ' << fullPrecision(m(row, 2)) << ' '
+                << fullPrecision(m(row, 3)) << '\n';
+  }
+}
+
+void writeJson(const std::string& path, const ev::ErrorStatistics& s) {
+  std::ofstream out(path);
+  if (!out) throw ev::EvaluationError("cannot write JSON file '" + path + "'");
+  dynslam::core::JsonWriter json(out);
+  json.beginObject()
+      .member("rmse", s.rmse)
+      .member("mean", s.mean)
+      .member("median", s.median)
+      .member("std", s.std)
+      .member("min", s.min)
+      .member("max", s.max)
+      .member("sse", s.sse)
+      .endObject();
+  out.flush();
+  if (!out) throw ev::EvaluationError("error while writing JSON file '" + path + "'");
+}
+
+int run(const Options& o) {
+  const auto ref_full = dynslam::core::readTrajectory(o.ref_path, o.ref_format);
+  const auto est_full = dynslam::core::readTrajectory(o.est_path, o.est_format);
+  std::cout << "reference   " << o.ref_path << " (" << formatName(o.ref_format) << ", "
+            << ref_full.size() << " poses)\n"
+            << "estimate    " << o.est_path << " (" << formatName(o.est_format) << ", "
+            << est_full.size() << " poses)\n";
+
+  // KITTI files carry no time, so any pair with one is paired by index (evo's kitti mode).
+  const bool by_index =
+      o.ref_format == TrajectoryFormat::Kitti || o.est_format == TrajectoryFormat::Kitti;
+  ev::AssociatedTrajectories pairs =
+      by_index ? ev::associateByIndex(ref_full, est_full)
+               : ev::associateByTime(ref_full, est_full, o.t_max_diff, o.t_offset);
+  if (by_index)
+    std::cout << "pairs       " << pairs.first.size() << " (paired by index)\n";
+  else
+    std::cout << "pairs       " << pairs.first.size() << " of max. " << pairs.max_pairs
+              << " (max. time diff " << o.t_max_diff << " s, offset " << o.t_offset << " s)\n";
+
+  const dynslam::core::Trajectory& ref = pairs.first;
+  dynslam::core::Trajectory& est = pairs.second;
+  printAlignment(ev::alignTrajectory(ref, est, o.align, o.align_origin));
+
+  std::vector<double> errors, error_times;
+  const double t0 = est.front().t;
+  if (o.command == "ape") {
+    errors = ev::computeApe(ref, est, o.relation);
+    for (const auto& p : est) error_times.push_back(p.t - t0);
+  } else {
+    const ev::RpeResult rpe = ev::computeRpe(ref, est, o.rpe);
+    errors = rpe.errors;
+    for (const auto& [i, j] : rpe.pairs) error_times.push_back(est[j].t - t0);
+    std::cout << "rpe pairs   " << rpe.pairs.size() << " (delta " << o.rpe.delta
+              << (o.rpe.delta_unit == ev::DeltaUnit::Frames ? " frames" : " m")
+              << (o.rpe.all_pairs ? ", all pairs" : ", consecutive pairs") << ")\n";
+  }
+  const std::string unit = ev::unitOf(o.relation);
+  const std::string metric = o.command == "ape" ? "APE" : "RPE";
+  std::cout << metric << " w.r.t. " << ev::describe(o.relation)
+            << (unit.empty() ? "" : " (" + unit + ")") << '\n';
+
+  const ev::ErrorStatistics s = ev::computeStatistics(errors);
+  const std::pair<const char*, double> rows[] = {{"rmse", s.rmse}, {"mean", s.mean},
+                                                 {"median", s.median}, {"std", s.std},
+                                                 {"min", s.min}, {"max", s.max}, {"sse", s.sse}};
+  for (const auto& [name, value] : rows) {
+    std::string padded = name;
+    padded.resize(7, ' ');
+    std::cout << padded << fullPrecision(value) << '\n';
+  }
+  if (!o.json_path.empty()) writeJson(o.json_path, s);
+  if (!o.plot_path.empty()) {
+    ev::PlotInput plot;
+    plot.title = metric + " w.r.t. " + ev::describe(o.relation) + ", alignment " +
+                 ev::toString(o.align) + (o.align_origin ? " + origin" : "") + ": " +
+                 o.est_path.substr(o.est_path.find_last_of('/') + 1);
+    plot.reference = ref;
+    plot.estimate = est;
+    plot.errors = errors;
+    plot.error_times = error_times;
+    plot.error_label = metric + (unit.empty() ? "" : " (" + unit + ")");
+    plot.time_label = by_index ? "pose index" : "t - t0 (s)";
+    plot.plane = o.plot_plane;
+    ev::writePlotPng(o.plot_path, plot);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return dynslam::core::runProgram("dynslam-eval", [&] {
+    dynslam::core::CommandLine cl(
+        {"--format", "--ref-format", "--est-format", "--align", "--t-max-diff", "--t-offset",
+         "--pose-relation", "--json", "--plot", "--plot-plane", "--delta", "--delta-unit",
+         "--delta-tol"},
+        {"--align-origin", "--all-pairs", "--pairs-from-reference"}, {}, 3);
+    cl.parse(argc, argv);
+    if (cl.helpRequested()) {
+      std::cout << kUsage;
+      return 0;
+    }
+    return run(parseArguments(cl));
+  });
+}

@@ -1,0 +1,14 @@
+#include "BuiltinStages.h"
+
+#include <dynslam/core/StageRegistry.h>
+#include <dynslam/odometry/RegisterStages.h>
+
+namespace dynslam::runner {
+
+void registerBuiltinStages(core::StageRegistry& registry) {
+  // Each module adds its line here as its stages land (detection, segmentation, tracking,
+  // frontend, estimator).
+  odometry::registerStages(registry);
+}
+
+}  // namespace dynslam::runner

@@ -1,0 +1,12 @@
+#pragma once
+// Every stage class the programs can create by name from [pipeline] stages.
+namespace dynslam::core {
+class StageRegistry;
+}
+
+namespace dynslam::runner {
+
+/// Registers the stages of every module linked into the programs.
+void registerBuiltinStages(core::StageRegistry& registry);
+
+}  // namespace dynslam::runner

@@ -1,0 +1,23 @@
+#pragma once
+// The rawlog playback loop of the `dynslam` program: rawlog -> SensorSync -> Pipeline, with the
+// trajectory written pose by pose and a summary written whatever happens.
+#include <string>
+#include <vector>
+
+namespace dynslam::runner {
+
+struct RunnerArgs {
+  std::string config;                  ///< ini file
+  std::string rawlog;                  ///< input
+  std::string out;                     ///< output folder (created)
+  std::vector<std::string> overrides;  ///< "section.key=value"
+  long max_frames = -1;                ///< stop after this many frames (-1: all)
+  bool quiet = false;                  ///< no progress output
+};
+
+/// Runs the whole job. Returns the process exit code: 0 on success, 1 when the input or the
+/// configuration was bad (the message went to stderr; trajectory.tum and summary.json hold
+/// what was done before the failure).
+int runDynslam(const RunnerArgs& args);
+
+}  // namespace dynslam::runner

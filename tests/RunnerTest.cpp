@@ -1,0 +1,198 @@
+// The `dynslam` program end to end: synthetic rawlogs written here, bad input of every kind,
+// and (when ../shared is present) a real 7-Scenes conversion cut in half.
+#include <dynslam/core/TrajectoryFile.h>
+#include <dynslam/testing/SyntheticObservations.h>
+#include <dynslam/testing/TestEnv.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using dynslam::testing::binDir;
+using dynslam::testing::runCommand;
+using dynslam::testing::scratchDir;
+
+namespace {
+
+const char* kOdometryIni = "[pipeline]\nstages = RgbdOdometry\n[RgbdOdometry]\nmax_depth = 6\n";
+
+std::string writeFile(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A 320 x 240 room sequence at 30 Hz with a 200 Hz IMU between the frames.
+std::string writeRoomRawlog(const std::string& path, int frames,
+                            std::vector<double>* stamps = nullptr) {
+  auto k = dynslam::testing::vgaCamera();
+  k.width = 320;
+  k.height = 240;
+  k.fx = k.fy = 262.5;
+  k.cx = 159.5;
+  k.cy = 119.5;
+  const auto path_ = dynslam::testing::handheldPath(frames);
+  std::vector<mrpt::serialization::CSerializable::Ptr> objs;
+  for (int i = 0; i < frames; ++i) {
+    const double t = 100.0 + i / 30.0;
+    for (int j = 1; j <= 6; ++j) objs.push_back(dynslam::testing::makeImu(t - 1 / 30.0 + j / 200.0));
+    objs.push_back(dynslam::testing::makeRoomScan(t, path_[i], k));
+    if (stamps) stamps->push_back(t);
+  }
+  dynslam::testing::writeRawlog(path, objs);
+  return path;
+}
+
+std::string dynslamCommand(const std::string& args) { return binDir() + "/dynslam " + args + " --quiet"; }
+
+size_t lineCount(const std::string& path) {
+  std::ifstream in(path);
+  size_t n = 0;
+  for (std::string line; std::getline(in, line);) n += !line.empty();
+  return n;
+}
+
+}  // namespace
+
+TEST(Runner, PlaysASyntheticRoomAndWritesTrajectoryAndSummary) {
+  const std::string dir = scratchDir();
+  std::vector<double> stamps;
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 20, &stamps);
+  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + dir + "/out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  const auto traj = dynslam::core::readTum(dir + "/out/trajectory.tum");
+  ASSERT_EQ(traj.size(), 20u);
+  const auto truth = dynslam::testing::handheldPath(20);
+  for (size_t i = 0; i < traj.size(); ++i) {
+    EXPECT_NEAR(traj[i].t, stamps[i], 1e-6);
+    EXPECT_LT((traj[i].T_world_body.translation() - truth[i].translation()).norm(), 0.01) << i;
+  }
+  const std::string summary = readFile(dir + "/out/summary.json");
+  EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"frames\": 20"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"imu\": 120"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"name\": \"RgbdOdometry\""), std::string::npos) << summary;
+}
+
+TEST(Runner, TruncatedRawlogIsAnErrorAndKeepsTheTrajectorySoFar) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 20);
+  const std::string cut = dir + "/cut.rawlog";
+  fs::copy_file(rawlog, cut);
+  fs::resize_file(cut, fs::file_size(rawlog) / 2);
+  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + cut + " --out " + dir + "/out"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(cut), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("truncated"), std::string::npos) << r.output;
+  const size_t poses = lineCount(dir + "/out/trajectory.tum");
+  EXPECT_GT(poses, 3u) << "the frames before the cut were estimated and written";
+  EXPECT_LT(poses, 20u);
+  EXPECT_NE(readFile(dir + "/out/summary.json").find("\"status\": \"failed\""), std::string::npos);
+}
+
+TEST(Runner, SevenScenesConversionCutInHalf) {
+  DYNSLAM_REQUIRE_SHARED(scenes, "data/7scenes");
+  const std::string dir = scratchDir();
+  const auto conv = runCommand(binDir() + "/sevenscenes2rawlog --in " + scenes + " --out " + dir +
+                               "/ss.rawlog --last 59");
+  ASSERT_EQ(conv.exit_code, 0) << conv.output;
+  fs::copy_file(dir + "/ss.rawlog", dir + "/ss_cut.rawlog");
+  fs::resize_file(dir + "/ss_cut.rawlog", fs::file_size(dir + "/ss.rawlog") / 2);
+  fs::create_directory_symlink(dir + "/ss_Images", dir + "/ss_cut_Images");
+  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir + "/ss_cut.rawlog --out " +
+                                    dir + "/out"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("ss_cut.rawlog"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("truncated"), std::string::npos) << r.output;
+  const size_t poses = lineCount(dir + "/out/trajectory.tum");
+  EXPECT_GT(poses, 10u);
+  EXPECT_LT(poses, 60u);
+}
+
+TEST(Runner, OutOfOrderTimestampsAreAnErrorAndKeepTheTrajectorySoFar) {
+  const std::string dir = scratchDir();
+  const auto path = dynslam::testing::handheldPath(6);
+  std::vector<mrpt::serialization::CSerializable::Ptr> objs;
+  for (int i = 0; i < 6; ++i) {
+    auto k = dynslam::testing::vgaCamera();
+    const double t = i == 4 ? 10.05 : 10.0 + i * 0.1;  // frame 4 goes back in time
+    objs.push_back(dynslam::testing::makeRoomScan(t, path[i], k));
+  }
+  dynslam::testing::writeRawlog(dir + "/bad.rawlog", objs);
+  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir + "/bad.rawlog --out " +
+                                    dir + "/out"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("out-of-order timestamp"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("observation #4"), std::string::npos) << r.output;
+  EXPECT_EQ(lineCount(dir + "/out/trajectory.tum"), 3u) << "frames 0-2 were handed out before";
+}
+
+TEST(Runner, ConfigurationErrorsNameWhatIsWrong) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 2);
+  const auto run = [&](const std::string& ini, const std::string& extra = "") {
+    return runCommand(dynslamCommand("--config " + writeFile(dir + "/c.ini", ini) + " --rawlog " + rawlog +
+                              " --out " + dir + "/out " + extra));
+  };
+  auto r = run("[pipeline]\nstages = RgbdOdometry, Teleporter\n");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("unknown stage class 'Teleporter'"), std::string::npos) << r.output;
+
+  r = run("[pipeline]\nstages = RgbdOdometry\n[RgbdOdometry]\nmax_dpeth = 3\n");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("unknown key 'max_dpeth' in section [RgbdOdometry]"), std::string::npos)
+      << r.output;
+
+  r = run(kOdometryIni, "--set RgbdOdometry.methd=icp");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("'methd'"), std::string::npos) << r.output;
+
+  r = run(std::string(kOdometryIni) + "[RgbdOdometri]\nmethod = icp\n");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("unknown section [RgbdOdometri]"), std::string::npos) << r.output;
+
+  r = run(kOdometryIni, "--set RgbdOdometry.method=icp");
+  EXPECT_EQ(r.exit_code, 0) << "a valid override works: " << r.output;
+}
+
+TEST(Runner, MissingFilesAreNamed) {
+  const std::string dir = scratchDir();
+  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
+  auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir + "/nope.rawlog --out " + dir + "/o"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find(dir + "/nope.rawlog"), std::string::npos) << r.output;
+  r = runCommand(dynslamCommand("--config " + dir + "/nope.ini --rawlog x --out " + dir + "/o"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find(dir + "/nope.ini"), std::string::npos) << r.output;
+}
+
+TEST(Runner, WithoutAnEstimatorSaysSo) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 3);
+  const auto ini = writeFile(dir + "/none.ini", "[pipeline]\nstages =\n");
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + dir + "/out"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("no pose estimator"), std::string::npos) << r.output;
+  EXPECT_EQ(lineCount(dir + "/out/trajectory.tum"), 0u);
+  EXPECT_NE(readFile(dir + "/out/summary.json").find("\"frames\": 3"), std::string::npos);
+}
+
+TEST(Runner, UsageErrorsExitWithTwo) {
+  EXPECT_EQ(runCommand(binDir() + "/dynslam").exit_code, 2);
+  EXPECT_EQ(runCommand(binDir() + "/dynslam --config a --rawlog b --out c --bogus").exit_code, 2);
+  const auto help = runCommand(binDir() + "/dynslam --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--set"), std::string::npos);
+}
