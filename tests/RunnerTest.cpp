@@ -196,3 +196,23 @@ TEST(Runner, UsageErrorsExitWithTwo) {
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.output.find("--set"), std::string::npos);
 }
+
+TEST(Runner, MrptKinectAndRtkRawlogsStreamThroughThePipeline) {
+  DYNSLAM_REQUIRE_SHARED(rgbd, "data/mrpt/tests_rgbd.rawlog");
+  DYNSLAM_REQUIRE_SHARED(rtk, "data/mrpt/test_rtk_path.rawlog");
+  const std::string dir = scratchDir();
+  const auto ini = writeFile(dir + "/none.ini", "[pipeline]\nstages =\n");
+  auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rgbd + " --out " + dir + "/k"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::string summary = readFile(dir + "/k/summary.json");
+  EXPECT_NE(summary.find("\"mrpt::obs::CObservation3DRangeScan\": 1"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"frames\": 1"), std::string::npos) << summary;
+
+  r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rtk + " --out " + dir +
+                                "/g --set SensorSync.gnss_label=GPS_RTK_REAR"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  summary = readFile(dir + "/g/summary.json");
+  EXPECT_NE(summary.find("\"mrpt::obs::CObservationGPS\": 691"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"gnss\": 77"), std::string::npos) << "the rear receiver" << summary;
+  EXPECT_NE(summary.find("\"frames\": 0"), std::string::npos) << summary;
+}

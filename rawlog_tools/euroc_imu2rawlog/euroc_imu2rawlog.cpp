@@ -1,7 +1,7 @@
 // euroc_imu2rawlog: converts an EuRoC MAV imu.csv (and optionally groundtruth.csv) into an
 // observations-only MRPT rawlog of IMU observations (+ <stem>.gt.tum).
 #include <dynslam/core/TrajectoryFile.h>
-#include <dynslam/rawlog_tools/CommandLine.h>
+#include <dynslam/core/CommandLine.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/OutputPaths.h>
@@ -15,6 +15,7 @@
 #include <optional>
 
 using namespace dynslam::rawlog_tools;
+using dynslam::core::CommandLine;
 
 namespace {
 
@@ -118,7 +119,7 @@ int convert(const CommandLine& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return runConverter("euroc_imu2rawlog", [&] {
+  return dynslam::core::runProgram("euroc_imu2rawlog", [&] {
     CommandLine args({"--imu", "--gt", "--out"}, {});
     args.parse(argc, argv);
     if (args.helpRequested()) {

@@ -4,7 +4,7 @@
 
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/rawlog_tools/ColourImageStore.h>
-#include <dynslam/rawlog_tools/CommandLine.h>
+#include <dynslam/core/CommandLine.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/OutputPaths.h>
@@ -18,6 +18,7 @@
 
 namespace fs = std::filesystem;
 using namespace dynslam::rawlog_tools;
+using dynslam::core::CommandLine;
 
 namespace {
 
@@ -103,7 +104,7 @@ int convert(const CommandLine& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return runConverter("sevenscenes2rawlog", [&] {
+  return dynslam::core::runProgram("sevenscenes2rawlog", [&] {
     CommandLine args({"--in", "--out", "--first", "--last", "--t0"}, {"--embed-images"});
     args.parse(argc, argv);
     if (args.helpRequested()) {

@@ -90,10 +90,11 @@ class RawlogToolsSevenScenes : public ::testing::Test {
   static void SetUpTestSuite() {
     dataDir_ = dynslam::testing::sharedPath("data/7scenes");
     if (dataDir_.empty()) return;
+    // Beside the other tests' scratch folders (DYNSLAM_TEST_TMP, by default build/test-tmp).
     const char* tmp = std::getenv("DYNSLAM_TEST_TMP");
-    const fs::path dir =
-        fs::path(tmp && *tmp ? tmp : fs::temp_directory_path().string()) /
-        "rawlog_tools_sevenscenes_fixture";
+    const fs::path root = tmp && *tmp ? fs::path(tmp)
+                                      : fs::path(dynslam::testing::binDir()).parent_path() / "test-tmp";
+    const fs::path dir = root / "rawlog_tools_sevenscenes_fixture";
     fs::create_directories(dir);
     rawlog_ = (dir / "seven.rawlog").string();
     FileLock lock((dir / "lock").string());
@@ -292,6 +293,20 @@ TEST_F(RawlogToolsSevenScenes, GroundTruthHasOnePoseFileLinePerFrame) {
     ++index;
   }
   EXPECT_EQ(index, kFrames);
+}
+
+TEST_F(RawlogToolsSevenScenes, GroundTruthEvaluatesAgainstItselfWithZeroApe) {
+  const std::string gt = fs::path(rawlog_).replace_extension(".gt.tum").string();
+  const auto r = runCommand(program("dynslam-eval") + " ape " + shellQuoted(gt) + " " +
+                            shellQuoted(gt) + " --align se3");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("pairs       600 of max. 600"), std::string::npos) << r.output;
+  std::istringstream lines(r.output);
+  double rmse = -1;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("rmse", 0) == 0) rmse = std::stod(line.substr(4));
+  EXPECT_GE(rmse, 0.0) << r.output;
+  EXPECT_LT(rmse, 1e-9) << r.output;
 }
 
 TEST(RawlogToolsSevenScenesConverter, FrameRangeAndEmbeddedImages) {

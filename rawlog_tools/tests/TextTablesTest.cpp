@@ -1,4 +1,3 @@
-#include <dynslam/rawlog_tools/CommandLine.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/TextTables.h>
 #include <dynslam/testing/TestEnv.h>
@@ -54,23 +53,5 @@ TEST(RawlogToolsTextTables, ErrorsNameFileLineColumnAndText) {
 TEST(RawlogToolsTextTables, NumberGridCountsNumbers) {
   EXPECT_EQ(readNumberGrid(writeFile("k.txt", "1 0 2\n0 3 4\n0 0 1\n"), 9).at(5), 4.0);
   EXPECT_NE(errorOf([] { readNumberGrid(writeFile("k.txt", "1 0 2\n"), 9); }).find("expected 9"),
-            std::string::npos);
-}
-
-TEST(RawlogToolsCommandLine, RejectsUnknownRepeatedAndValuelessFlags) {
-  CommandLine args({"--in", "--n"}, {"--embed-images"});
-  const char* good[] = {"prog", "--in", "d", "--embed-images", "--n", "12"};
-  args.parse(6, good);
-  EXPECT_EQ(args.required("--in"), "d");
-  EXPECT_TRUE(args.has("--embed-images"));
-  EXPECT_EQ(args.optionalInteger("--n"), 12);
-  EXPECT_NE(errorOf([&] { args.optionalDouble("--in"); }).find("--in"), std::string::npos);
-  EXPECT_NE(errorOf([&] { args.required("--out"); }).find("--out"), std::string::npos);
-
-  const char* unknown[] = {"prog", "--inn", "d"};
-  EXPECT_NE(errorOf([&] { CommandLine({"--in"}, {}).parse(3, unknown); }).find("'--inn'"),
-            std::string::npos);
-  const char* valueless[] = {"prog", "--in"};
-  EXPECT_NE(errorOf([&] { CommandLine({"--in"}, {}).parse(2, valueless); }).find("needs a value"),
             std::string::npos);
 }

@@ -4,7 +4,7 @@
 #include "TumSequence.h"
 
 #include <dynslam/rawlog_tools/ColourImageStore.h>
-#include <dynslam/rawlog_tools/CommandLine.h>
+#include <dynslam/core/CommandLine.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/OutputPaths.h>
@@ -22,6 +22,7 @@
 
 namespace fs = std::filesystem;
 using namespace dynslam::rawlog_tools;
+using dynslam::core::CommandLine;
 
 namespace {
 
@@ -142,7 +143,7 @@ int convert(const CommandLine& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return runConverter("tum2rawlog", [&] {
+  return dynslam::core::runProgram("tum2rawlog", [&] {
     CommandLine args({"--in", "--out", "--fx", "--fy", "--cx", "--cy", "--max-diff"},
                      {"--embed-images"});
     args.parse(argc, argv);
