@@ -117,8 +117,8 @@ Options parseArguments(const dynslam::core::CommandLine& cl) {
   o.rpe.relation = o.relation;
 
   if (o.command == "ape") {
-    for (const char* flag : {"--delta", "--delta-unit", "--all-pairs", "--delta-tol",
-                             "--pairs-from-reference"})
+    for (const char* flag :
+         {"--delta", "--delta-unit", "--all-pairs", "--delta-tol", "--pairs-from-reference"})
       if (cl.has(flag)) throw UsageError(std::string("flag ") + flag + " only applies to rpe");
   }
   if (o.t_max_diff < 0.0) throw UsageError("flag --t-max-diff must be >= 0");
@@ -222,9 +222,9 @@ int run(const Options& o) {
             << (unit.empty() ? "" : " (" + unit + ")") << '\n';
 
   const ev::ErrorStatistics s = ev::computeStatistics(errors);
-  const std::pair<const char*, double> rows[] = {{"rmse", s.rmse}, {"mean", s.mean},
-                                                 {"median", s.median}, {"std", s.std},
-                                                 {"min", s.min}, {"max", s.max}, {"sse", s.sse}};
+  const std::pair<const char*, double> rows[] = {
+      {"rmse", s.rmse}, {"mean", s.mean}, {"median", s.median}, {"std", s.std},
+      {"min", s.min},   {"max", s.max},   {"sse", s.sse}};
   for (const auto& [name, value] : rows) {
     std::string padded = name;
     padded.resize(7, ' ');

@@ -23,18 +23,12 @@ std::string program() { return dt::binDir() + "/dynslam-eval"; }
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 /// The members of a flat JSON object of numbers, in file order.
 std::vector<std::pair<std::string, double>> parseFlatJson(const std::string& text) {
   std::vector<std::pair<std::string, double>> members;
   const std::regex member(R"re("([^"]+)"\s*:\s*([-+0-9.eE]+))re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), member); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), member);
+       it != std::sregex_iterator(); ++it)
     members.emplace_back((*it)[1].str(), std::stod((*it)[2].str()));
   return members;
 }
@@ -46,7 +40,8 @@ void expectEvoFigures(const std::vector<std::pair<std::string, double>>& members
   for (std::size_t k = 0; k < 7; ++k) {
     EXPECT_EQ(members[k].first, order[k]);
     const double expected = evo.at(members[k].first);
-    EXPECT_LE(std::abs(members[k].second - expected), 1e-6 * std::abs(expected)) << members[k].first;
+    EXPECT_LE(std::abs(members[k].second - expected), 1e-6 * std::abs(expected))
+        << members[k].first;
   }
 }
 
@@ -58,19 +53,21 @@ TEST(EvalCli, KittiApeWithJsonAndPlot) {
   const std::string dir = dt::scratchDir();
   const std::string json = dir + "/ape.json", png = dir + "/ape.png";
   const auto r = dt::runCommand(program() + " ape " + quoted(gt) + " " + quoted(orb) +
-                                " --format kitti --align se3 --json " + quoted(json) +
-                                " --plot " + quoted(png));
+                                " --format kitti --align se3 --json " + quoted(json) + " --plot " +
+                                quoted(png));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("pairs       4541"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("rmse   1.30344971456"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("scale       1\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("rotation    0.99983853"), std::string::npos) << r.output;
 
-  expectEvoFigures(parseFlatJson(readFile(json)),
-                   {{"rmse", 1.3034497145650266}, {"mean", 1.1569971285389768},
-                    {"median", 1.065624769555848}, {"std", 0.6002822693968323},
-                    {"min", 0.06931322021483087}, {"max", 3.587949120678954},
-                    {"sse", 7715.073440292808}});
+  expectEvoFigures(parseFlatJson(dt::readTextFile(json)), {{"rmse", 1.3034497145650266},
+                                                           {"mean", 1.1569971285389768},
+                                                           {"median", 1.065624769555848},
+                                                           {"std", 0.6002822693968323},
+                                                           {"min", 0.06931322021483087},
+                                                           {"max", 3.587949120678954},
+                                                           {"sse", 7715.073440292808}});
 
   ASSERT_TRUE(fs::exists(png));
   EXPECT_GT(fs::file_size(png), 20000u);
@@ -97,11 +94,13 @@ TEST(EvalCli, KittiRpeTenMetres) {
                                 " --format kitti --delta 10 --delta-unit m --json " + quoted(json));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("rpe pairs   353"), std::string::npos) << r.output;
-  expectEvoFigures(parseFlatJson(readFile(json)),
-                   {{"rmse", 0.22626134329310163}, {"mean", 0.16901737200653275},
-                    {"median", 0.13848432516645606}, {"std", 0.1504238127053164},
-                    {"min", 0.025322719660754993}, {"max", 1.2722090778658726},
-                    {"sse", 18.07155100048597}});
+  expectEvoFigures(parseFlatJson(dt::readTextFile(json)), {{"rmse", 0.22626134329310163},
+                                                           {"mean", 0.16901737200653275},
+                                                           {"median", 0.13848432516645606},
+                                                           {"std", 0.1504238127053164},
+                                                           {"min", 0.025322719660754993},
+                                                           {"max", 1.2722090778658726},
+                                                           {"sse", 18.07155100048597}});
 }
 
 TEST(EvalCli, EurocReferenceWithTumEstimate) {
@@ -148,8 +147,8 @@ TEST(EvalCli, BadDataNamesFileAndLine) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find(bad + ":3:"), std::string::npos) << r.output;
 
-  const auto missing = dt::runCommand(program() + " ape " + quoted(good) + " " +
-                                      quoted(dir + "/missing.txt"));
+  const auto missing =
+      dt::runCommand(program() + " ape " + quoted(good) + " " + quoted(dir + "/missing.txt"));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.output.find(dir + "/missing.txt"), std::string::npos) << missing.output;
 
@@ -164,8 +163,8 @@ TEST(EvalCli, BadDataNamesFileAndLine) {
   const std::string k1 = dir + "/k1.txt", k2 = dir + "/k2.txt";
   std::ofstream(k1) << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 1 0 1 0 0 0 0 1 0\n";
   std::ofstream(k2) << "1 0 0 0 0 1 0 0 0 0 1 0\n";
-  const auto lengths = dt::runCommand(program() + " ape " + quoted(k1) + " " + quoted(k2) +
-                                      " --format kitti");
+  const auto lengths =
+      dt::runCommand(program() + " ape " + quoted(k1) + " " + quoted(k2) + " --format kitti");
   EXPECT_EQ(lengths.exit_code, 1);
   EXPECT_NE(lengths.output.find("same number of poses (2 vs 1)"), std::string::npos)
       << lengths.output;

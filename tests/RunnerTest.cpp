@@ -10,24 +10,14 @@
 
 namespace fs = std::filesystem;
 using dynslam::testing::binDir;
+using dynslam::testing::readTextFile;
 using dynslam::testing::runCommand;
 using dynslam::testing::scratchDir;
+using dynslam::testing::writeTextFile;
 
 namespace {
 
 const char* kOdometryIni = "[pipeline]\nstages = RgbdOdometry\n[RgbdOdometry]\nmax_depth = 6\n";
-
-std::string writeFile(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-  return path;
-}
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// A 320 x 240 room sequence at 30 Hz with a 200 Hz IMU between the frames.
 std::string writeRoomRawlog(const std::string& path, int frames,
@@ -42,7 +32,8 @@ std::string writeRoomRawlog(const std::string& path, int frames,
   std::vector<mrpt::serialization::CSerializable::Ptr> objs;
   for (int i = 0; i < frames; ++i) {
     const double t = 100.0 + i / 30.0;
-    for (int j = 1; j <= 6; ++j) objs.push_back(dynslam::testing::makeImu(t - 1 / 30.0 + j / 200.0));
+    for (int j = 1; j <= 6; ++j)
+      objs.push_back(dynslam::testing::makeImu(t - 1 / 30.0 + j / 200.0));
     objs.push_back(dynslam::testing::makeRoomScan(t, path_[i], k));
     if (stamps) stamps->push_back(t);
   }
@@ -50,7 +41,9 @@ std::string writeRoomRawlog(const std::string& path, int frames,
   return path;
 }
 
-std::string dynslamCommand(const std::string& args) { return binDir() + "/dynslam " + args + " --quiet"; }
+std::string dynslamCommand(const std::string& args) {
+  return binDir() + "/dynslam " + args + " --quiet";
+}
 
 size_t lineCount(const std::string& path) {
   std::ifstream in(path);
@@ -65,8 +58,9 @@ TEST(Runner, PlaysASyntheticRoomAndWritesTrajectoryAndSummary) {
   const std::string dir = scratchDir();
   std::vector<double> stamps;
   const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 20, &stamps);
-  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
-  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + dir + "/out"));
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(
+      dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + dir + "/out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   const auto traj = dynslam::core::readTum(dir + "/out/trajectory.tum");
@@ -76,7 +70,7 @@ TEST(Runner, PlaysASyntheticRoomAndWritesTrajectoryAndSummary) {
     EXPECT_NEAR(traj[i].t, stamps[i], 1e-6);
     EXPECT_LT((traj[i].T_world_body.translation() - truth[i].translation()).norm(), 0.01) << i;
   }
-  const std::string summary = readFile(dir + "/out/summary.json");
+  const std::string summary = readTextFile(dir + "/out/summary.json");
   EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"frames\": 20"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"imu\": 120"), std::string::npos) << summary;
@@ -89,15 +83,17 @@ TEST(Runner, TruncatedRawlogIsAnErrorAndKeepsTheTrajectorySoFar) {
   const std::string cut = dir + "/cut.rawlog";
   fs::copy_file(rawlog, cut);
   fs::resize_file(cut, fs::file_size(rawlog) / 2);
-  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
-  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + cut + " --out " + dir + "/out"));
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  const auto r =
+      runCommand(dynslamCommand("--config " + ini + " --rawlog " + cut + " --out " + dir + "/out"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find(cut), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("truncated"), std::string::npos) << r.output;
   const size_t poses = lineCount(dir + "/out/trajectory.tum");
   EXPECT_GT(poses, 3u) << "the frames before the cut were estimated and written";
   EXPECT_LT(poses, 20u);
-  EXPECT_NE(readFile(dir + "/out/summary.json").find("\"status\": \"failed\""), std::string::npos);
+  EXPECT_NE(readTextFile(dir + "/out/summary.json").find("\"status\": \"failed\""),
+            std::string::npos);
 }
 
 TEST(Runner, SevenScenesConversionCutInHalf) {
@@ -109,9 +105,9 @@ TEST(Runner, SevenScenesConversionCutInHalf) {
   fs::copy_file(dir + "/ss.rawlog", dir + "/ss_cut.rawlog");
   fs::resize_file(dir + "/ss_cut.rawlog", fs::file_size(dir + "/ss.rawlog") / 2);
   fs::create_directory_symlink(dir + "/ss_Images", dir + "/ss_cut_Images");
-  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
-  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir + "/ss_cut.rawlog --out " +
-                                    dir + "/out"));
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir +
+                                           "/ss_cut.rawlog --out " + dir + "/out"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("ss_cut.rawlog"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("truncated"), std::string::npos) << r.output;
@@ -130,9 +126,9 @@ TEST(Runner, OutOfOrderTimestampsAreAnErrorAndKeepTheTrajectorySoFar) {
     objs.push_back(dynslam::testing::makeRoomScan(t, path[i], k));
   }
   dynslam::testing::writeRawlog(dir + "/bad.rawlog", objs);
-  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
-  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir + "/bad.rawlog --out " +
-                                    dir + "/out"));
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(
+      dynslamCommand("--config " + ini + " --rawlog " + dir + "/bad.rawlog --out " + dir + "/out"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("out-of-order timestamp"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("observation #4"), std::string::npos) << r.output;
@@ -143,8 +139,8 @@ TEST(Runner, ConfigurationErrorsNameWhatIsWrong) {
   const std::string dir = scratchDir();
   const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 2);
   const auto run = [&](const std::string& ini, const std::string& extra = "") {
-    return runCommand(dynslamCommand("--config " + writeFile(dir + "/c.ini", ini) + " --rawlog " + rawlog +
-                              " --out " + dir + "/out " + extra));
+    return runCommand(dynslamCommand("--config " + writeTextFile(dir + "/c.ini", ini) +
+                                     " --rawlog " + rawlog + " --out " + dir + "/out " + extra));
   };
   auto r = run("[pipeline]\nstages = RgbdOdometry, Teleporter\n");
   EXPECT_EQ(r.exit_code, 1);
@@ -169,8 +165,9 @@ TEST(Runner, ConfigurationErrorsNameWhatIsWrong) {
 
 TEST(Runner, MissingFilesAreNamed) {
   const std::string dir = scratchDir();
-  const auto ini = writeFile(dir + "/odo.ini", kOdometryIni);
-  auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + dir + "/nope.rawlog --out " + dir + "/o"));
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  auto r = runCommand(
+      dynslamCommand("--config " + ini + " --rawlog " + dir + "/nope.rawlog --out " + dir + "/o"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find(dir + "/nope.rawlog"), std::string::npos) << r.output;
   r = runCommand(dynslamCommand("--config " + dir + "/nope.ini --rawlog x --out " + dir + "/o"));
@@ -181,12 +178,13 @@ TEST(Runner, MissingFilesAreNamed) {
 TEST(Runner, WithoutAnEstimatorSaysSo) {
   const std::string dir = scratchDir();
   const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 3);
-  const auto ini = writeFile(dir + "/none.ini", "[pipeline]\nstages =\n");
-  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + dir + "/out"));
+  const auto ini = writeTextFile(dir + "/none.ini", "[pipeline]\nstages =\n");
+  const auto r = runCommand(
+      dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + dir + "/out"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("no pose estimator"), std::string::npos) << r.output;
   EXPECT_EQ(lineCount(dir + "/out/trajectory.tum"), 0u);
-  EXPECT_NE(readFile(dir + "/out/summary.json").find("\"frames\": 3"), std::string::npos);
+  EXPECT_NE(readTextFile(dir + "/out/summary.json").find("\"frames\": 3"), std::string::npos);
 }
 
 TEST(Runner, UsageErrorsExitWithTwo) {
@@ -201,17 +199,19 @@ TEST(Runner, MrptKinectAndRtkRawlogsStreamThroughThePipeline) {
   DYNSLAM_REQUIRE_SHARED(rgbd, "data/mrpt/tests_rgbd.rawlog");
   DYNSLAM_REQUIRE_SHARED(rtk, "data/mrpt/test_rtk_path.rawlog");
   const std::string dir = scratchDir();
-  const auto ini = writeFile(dir + "/none.ini", "[pipeline]\nstages =\n");
-  auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rgbd + " --out " + dir + "/k"));
+  const auto ini = writeTextFile(dir + "/none.ini", "[pipeline]\nstages =\n");
+  auto r =
+      runCommand(dynslamCommand("--config " + ini + " --rawlog " + rgbd + " --out " + dir + "/k"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::string summary = readFile(dir + "/k/summary.json");
-  EXPECT_NE(summary.find("\"mrpt::obs::CObservation3DRangeScan\": 1"), std::string::npos) << summary;
+  std::string summary = readTextFile(dir + "/k/summary.json");
+  EXPECT_NE(summary.find("\"mrpt::obs::CObservation3DRangeScan\": 1"), std::string::npos)
+      << summary;
   EXPECT_NE(summary.find("\"frames\": 1"), std::string::npos) << summary;
 
   r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rtk + " --out " + dir +
                                 "/g --set SensorSync.gnss_label=GPS_RTK_REAR"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  summary = readFile(dir + "/g/summary.json");
+  summary = readTextFile(dir + "/g/summary.json");
   EXPECT_NE(summary.find("\"mrpt::obs::CObservationGPS\": 691"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"gnss\": 77"), std::string::npos) << "the rear receiver" << summary;
   EXPECT_NE(summary.find("\"frames\": 0"), std::string::npos) << summary;

@@ -1,7 +1,7 @@
 // euroc_imu2rawlog: converts an EuRoC MAV imu.csv (and optionally groundtruth.csv) into an
 // observations-only MRPT rawlog of IMU observations (+ <stem>.gt.tum).
-#include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/core/CommandLine.h>
+#include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/OutputPaths.h>
@@ -19,7 +19,8 @@ using dynslam::core::CommandLine;
 
 namespace {
 
-constexpr const char* kUsage = R"(Usage: euroc_imu2rawlog --imu imu.csv [--gt groundtruth.csv] --out FILE.rawlog
+constexpr const char* kUsage =
+    R"(Usage: euroc_imu2rawlog --imu imu.csv [--gt groundtruth.csv] --out FILE.rawlog
 
 Converts EuRoC MAV IMU data (csv: t[ns], gyro x y z [rad/s], acc x y z [m/s^2]) into an MRPT
 rawlog of CObservationIMU ("IMU") observations with gyro (IMU_WX..WZ) and acc
@@ -106,12 +107,10 @@ int convert(const CommandLine& args) {
   const size_t samples = convertImu(imuFile, writer);
   if (samples == 0) throw ConversionError(imuFile + " holds no IMU samples");
   writer.close();
-  std::cout << "wrote " << samples << " " << kImuLabel << " observations to " << out.rawlog
-            << "\n";
+  std::cout << "wrote " << samples << " " << kImuLabel << " observations to " << out.rawlog << "\n";
   if (groundTruth) {
     dynslam::core::writeTum(out.groundTruth, *groundTruth);
-    std::cout << "ground truth: " << groundTruth->size() << " poses to " << out.groundTruth
-              << "\n";
+    std::cout << "ground truth: " << groundTruth->size() << " poses to " << out.groundTruth << "\n";
   }
   return 0;
 }

@@ -55,7 +55,8 @@ Eigen::Isometry3d readPose(const std::string& poseFile) {
       (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (matrix.row(3) != Eigen::RowVector4d(0, 0, 0, 1) || orthonormalityError > 1e-2 ||
       rotation.determinant() <= 0)
-    throw ConversionError(poseFile + ": not a rigid transform (last row must be 0 0 0 1 and the "
+    throw ConversionError(poseFile +
+                          ": not a rigid transform (last row must be 0 0 0 1 and the "
                           "top-left 3x3 a rotation)");
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(rotation, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

@@ -2,9 +2,9 @@
 // rawlog of RGB-D observations, plus its ground truth as TUM.
 #include "SevenScenesFolder.h"
 
+#include <dynslam/core/CommandLine.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/rawlog_tools/ColourImageStore.h>
-#include <dynslam/core/CommandLine.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/OutputPaths.h>
@@ -68,9 +68,8 @@ int convert(const CommandLine& args) {
                           "last frame in " + inDir + " is " + std::to_string(lastInDir) + ")");
   const PinholeIntrinsics intrinsics = sevenscenes::readIntrinsics(inDir);
 
-  ColourImageStore images(args.has("--embed-images") ? ImageStorage::Embedded
-                                                      : ImageStorage::External,
-                          out.imagesDir);
+  ColourImageStore images(
+      args.has("--embed-images") ? ImageStorage::Embedded : ImageStorage::External, out.imagesDir);
   RawlogWriter writer(out.rawlog);
   dynslam::core::Trajectory groundTruth;
   for (long long index = first; index <= last; ++index) {

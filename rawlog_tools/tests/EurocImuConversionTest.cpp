@@ -14,9 +14,9 @@
 
 namespace fs = std::filesystem;
 using dynslam::rawlog_tools::testing::forEachObservation;
-using dynslam::rawlog_tools::testing::shellQuoted;
-using dynslam::rawlog_tools::testing::rawlogEditInfo;
 using dynslam::rawlog_tools::testing::program;
+using dynslam::rawlog_tools::testing::rawlogEditInfo;
+using dynslam::rawlog_tools::testing::shellQuoted;
 using dynslam::testing::runCommand;
 using namespace mrpt::obs;
 
@@ -47,9 +47,9 @@ TEST(RawlogToolsEuroc, ConvertsEveryLineWithGyroAndAccAndExactStamps) {
   const auto rows = csvDataLines(dataDir + "/imu.csv");
   ASSERT_EQ(rows.size(), 7999u);  // data lines of the shared file (8000 lines with header)
   const std::string rawlog = dynslam::testing::scratchDir() + "/v102.rawlog";
-  const auto r = runCommand(program("euroc_imu2rawlog") + " --imu " + shellQuoted(dataDir + "/imu.csv") +
-                            " --gt " + shellQuoted(dataDir + "/groundtruth.csv") + " --out " +
-                            shellQuoted(rawlog));
+  const auto r = runCommand(
+      program("euroc_imu2rawlog") + " --imu " + shellQuoted(dataDir + "/imu.csv") + " --gt " +
+      shellQuoted(dataDir + "/groundtruth.csv") + " --out " + shellQuoted(rawlog));
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   size_t index = 0;
@@ -86,7 +86,8 @@ TEST(RawlogToolsEuroc, WritesBodyGroundTruthAsTumWithWxyzQuaternionReordered) {
   const auto gtRows = csvDataLines(dataDir + "/groundtruth.csv");
   const std::string rawlog = dynslam::testing::scratchDir() + "/v102.rawlog";
   ASSERT_EQ(runCommand(program("euroc_imu2rawlog") + " --imu " + shellQuoted(dataDir + "/imu.csv") +
-                       " --gt " + shellQuoted(dataDir + "/groundtruth.csv") + " --out " + shellQuoted(rawlog))
+                       " --gt " + shellQuoted(dataDir + "/groundtruth.csv") + " --out " +
+                       shellQuoted(rawlog))
                 .exit_code,
             0);
   std::ifstream in(fs::path(rawlog).replace_extension(".gt.tum"));
@@ -110,11 +111,12 @@ TEST(RawlogToolsEuroc, WritesBodyGroundTruthAsTumWithWxyzQuaternionReordered) {
     const Eigen::Quaterniond expected(std::stod(row[4]), std::stod(row[5]), std::stod(row[6]),
                                       std::stod(row[7]));
     const Eigen::Quaterniond written(p[7], p[4], p[5], p[6]);
-    EXPECT_NEAR(std::abs(expected.normalized().dot(written.normalized())), 1.0, 1e-9) << "pose " << i;
+    EXPECT_NEAR(std::abs(expected.normalized().dot(written.normalized())), 1.0, 1e-9)
+        << "pose " << i;
   }
   EXPECT_NEAR(poses[0][0], 1403715524.92214, 1e-6);
-  EXPECT_NEAR(poses[0][5], -0.205215 / Eigen::Vector4d(0.161869, 0.790012, -0.205215, 0.554587).norm(),
-              1e-6);
+  EXPECT_NEAR(poses[0][5],
+              -0.205215 / Eigen::Vector4d(0.161869, 0.790012, -0.205215, 0.554587).norm(), 1e-6);
 }
 
 class RawlogToolsEurocCorruptCsv : public ::testing::Test {

@@ -24,8 +24,8 @@ size_t forEachObservation(const std::string& rawlog,
   mrpt::obs::CSensoryFrame::Ptr frame;
   mrpt::obs::CObservation::Ptr obs;
   size_t entry = 0, count = 0;
-  while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(in, actions, frame, obs,
-                                                                   entry)) {
+  while (
+      mrpt::obs::CRawlog::getActionObservationPairOrObservation(in, actions, frame, obs, entry)) {
     if (!obs) continue;  // these rawlogs hold observations only
     onObs(obs);
     ++count;
@@ -36,7 +36,8 @@ size_t forEachObservation(const std::string& rawlog,
 
 std::map<std::string, size_t> countByLabel(const std::string& rawlog) {
   std::map<std::string, size_t> counts;
-  forEachObservation(rawlog, [&](const mrpt::obs::CObservation::Ptr& o) { ++counts[o->sensorLabel]; });
+  forEachObservation(rawlog,
+                     [&](const mrpt::obs::CObservation::Ptr& o) { ++counts[o->sensorLabel]; });
   return counts;
 }
 

@@ -8,6 +8,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cstdio>
@@ -15,17 +18,14 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
 #include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
 using dynslam::rawlog_tools::testing::forEachObservation;
-using dynslam::rawlog_tools::testing::shellQuoted;
-using dynslam::rawlog_tools::testing::rawlogEditInfo;
 using dynslam::rawlog_tools::testing::program;
+using dynslam::rawlog_tools::testing::rawlogEditInfo;
+using dynslam::rawlog_tools::testing::shellQuoted;
 using dynslam::testing::runCommand;
 using mrpt::obs::CObservation3DRangeScan;
 
@@ -73,13 +73,6 @@ std::string programSignature(const std::string& programFile, const std::string& 
   return programFile + " " + std::to_string(size) + " " + std::to_string(mtime) + " " + dataDir;
 }
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 class RawlogToolsSevenScenes : public ::testing::Test {
@@ -92,18 +85,20 @@ class RawlogToolsSevenScenes : public ::testing::Test {
     if (dataDir_.empty()) return;
     // Beside the other tests' scratch folders (DYNSLAM_TEST_TMP, by default build/test-tmp).
     const char* tmp = std::getenv("DYNSLAM_TEST_TMP");
-    const fs::path root = tmp && *tmp ? fs::path(tmp)
-                                      : fs::path(dynslam::testing::binDir()).parent_path() / "test-tmp";
+    const fs::path root = tmp && *tmp
+                              ? fs::path(tmp)
+                              : fs::path(dynslam::testing::binDir()).parent_path() / "test-tmp";
     const fs::path dir = root / "rawlog_tools_sevenscenes_fixture";
     fs::create_directories(dir);
     rawlog_ = (dir / "seven.rawlog").string();
     FileLock lock((dir / "lock").string());
-    const std::string signature =
-        programSignature(dynslam::rawlog_tools::testing::programPath("sevenscenes2rawlog"), dataDir_);
-    if (readText(dir / "signature") == signature && fs::exists(rawlog_)) {
+    const std::string signature = programSignature(
+        dynslam::rawlog_tools::testing::programPath("sevenscenes2rawlog"), dataDir_);
+    if (dynslam::testing::readTextFile((dir / "signature").string()) == signature &&
+        fs::exists(rawlog_)) {
       conversion_.exit_code = 0;
-      conversion_.output = readText(dir / "output");
-      seconds_ = std::stod(readText(dir / "seconds"));
+      conversion_.output = dynslam::testing::readTextFile((dir / "output").string());
+      seconds_ = std::stod(dynslam::testing::readTextFile((dir / "seconds").string()));
       return;
     }
     fs::remove(dir / "signature");
@@ -119,8 +114,8 @@ class RawlogToolsSevenScenes : public ::testing::Test {
   }
 
   void SetUp() override {
-    if (dataDir_.empty()) GTEST_SKIP() << "needs " << dynslam::testing::sharedDir()
-                                       << "/data/7scenes, which is absent";
+    if (dataDir_.empty())
+      GTEST_SKIP() << "needs " << dynslam::testing::sharedDir() << "/data/7scenes, which is absent";
     ASSERT_EQ(conversion_.exit_code, 0) << conversion_.output;
   }
 
@@ -223,8 +218,7 @@ TEST_F(RawlogToolsSevenScenes, DepthEqualsPngMillimetresWithInvalidAsZero) {
     // A few named pixels, so a failure shows values and not only a count.
     for (const auto& [r, c] : {std::pair{240, 320}, std::pair{100, 500}, std::pair{479, 639}}) {
       const uint16_t raw = png.at<uint16_t>(r, c);
-      EXPECT_NEAR(obs->rangeImage(r, c) * obs->rangeUnits, raw == 65535 ? 0.0 : raw / 1000.0,
-                  1e-6)
+      EXPECT_NEAR(obs->rangeImage(r, c) * obs->rangeUnits, raw == 65535 ? 0.0 : raw / 1000.0, 1e-6)
           << "frame " << index << " pixel (" << r << ", " << c << "), png " << raw;
     }
   }
@@ -243,8 +237,8 @@ TEST_F(RawlogToolsSevenScenes, ColourLoadsFromExternalStorageAndEqualsTheJpeg) {
   for (const auto& [index, obs] : observations) {
     ASSERT_TRUE(obs);
     ASSERT_TRUE(obs->intensityImage.isExternallyStored()) << "frame " << index;
-    const fs::path stored =
-        fs::path(rawlog_).parent_path() / "seven_Images" / obs->intensityImage.getExternalStorageFile();
+    const fs::path stored = fs::path(rawlog_).parent_path() / "seven_Images" /
+                            obs->intensityImage.getExternalStorageFile();
     EXPECT_TRUE(fs::exists(stored)) << stored;
     obs->load();
     const cv::Mat decoded = obs->intensityImage.asCvMatRef();
@@ -261,7 +255,8 @@ TEST_F(RawlogToolsSevenScenes, RawlogEditInfoCountsSixHundredRgbd) {
   if (!info.available) GTEST_SKIP() << "rawlog-edit (mrpt-apps) is not installed";
   ASSERT_EQ(info.exitCode, 0) << info.output;
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(info.output, m, std::regex(R"(Overall number of objects\s*:\s*(\d+))")))
+  ASSERT_TRUE(
+      std::regex_search(info.output, m, std::regex(R"(Overall number of objects\s*:\s*(\d+))")))
       << info.output;
   EXPECT_EQ(std::stoi(m[1].str()), kFrames);
   ASSERT_TRUE(std::regex_search(info.output, m, std::regex(R"(RGBD\s*/\s*(\d+))"))) << info.output;
@@ -287,7 +282,8 @@ TEST_F(RawlogToolsSevenScenes, GroundTruthHasOnePoseFileLinePerFrame) {
     EXPECT_NEAR(z, expected(2, 3), 1e-9);
     // The files' rotations are orthonormal only to ~3e-4; the converter projects them onto
     // SO(3), so entries agree to that level.
-    const Eigen::Matrix3d rotation = Eigen::Quaterniond(qw, qx, qy, qz).normalized().toRotationMatrix();
+    const Eigen::Matrix3d rotation =
+        Eigen::Quaterniond(qw, qx, qy, qz).normalized().toRotationMatrix();
     EXPECT_LT((rotation - expected.topLeftCorner<3, 3>()).cwiseAbs().maxCoeff(), 1e-3)
         << "frame " << index;
     ++index;
@@ -312,8 +308,9 @@ TEST_F(RawlogToolsSevenScenes, GroundTruthEvaluatesAgainstItselfWithZeroApe) {
 TEST(RawlogToolsSevenScenesConverter, FrameRangeAndEmbeddedImages) {
   DYNSLAM_REQUIRE_SHARED(dataDir, "data/7scenes");
   const std::string rawlog = dynslam::testing::scratchDir() + "/range.rawlog";
-  const auto r = runCommand(program("sevenscenes2rawlog") + " --embed-images --in " + shellQuoted(dataDir) +
-                            " --out " + shellQuoted(rawlog) + " --first 10 --last 12");
+  const auto r =
+      runCommand(program("sevenscenes2rawlog") + " --embed-images --in " + shellQuoted(dataDir) +
+                 " --out " + shellQuoted(rawlog) + " --first 10 --last 12");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(fs::exists(fs::path(rawlog).parent_path() / "range_Images"));
   int index = 10;

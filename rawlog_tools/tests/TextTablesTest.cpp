@@ -30,7 +30,8 @@ TEST(RawlogToolsTextTables, SkipsCommentsAndNamesColumnsFromTheHeader) {
   forEachTableRow(file, ',', [&](const TableSource& source, const TableRow& row) {
     EXPECT_EQ(source.columnNames, (std::vector<std::string>{"t", "x", "y"}));
     lines.push_back(row.line);
-    for (size_t c = 0; c < row.fields.size(); ++c) values.push_back(parseFiniteDouble(source, row, c));
+    for (size_t c = 0; c < row.fields.size(); ++c)
+      values.push_back(parseFiniteDouble(source, row, c));
   });
   EXPECT_EQ(lines, (std::vector<size_t>{3, 5}));
   EXPECT_EQ(values, (std::vector<double>{1, 2.5, -3, 4, 5, 6}));

@@ -2,10 +2,10 @@
 // by the io module).
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/RawlogWriter.h>
-#include <mrpt/core/Clock.h>
 #include <dynslam/rawlog_tools/TruncatedRawlog.h>
 #include <dynslam/testing/TestEnv.h>
 #include <gtest/gtest.h>
+#include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/obs/CRawlog.h>
@@ -35,7 +35,8 @@ std::pair<size_t, bool> readUntilTheEnd(const std::string& path) {
   mrpt::obs::CObservation::Ptr obs;
   size_t entry = 0, count = 0;
   try {
-    while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(in, actions, frame, obs, entry))
+    while (
+        mrpt::obs::CRawlog::getActionObservationPairOrObservation(in, actions, frame, obs, entry))
       ++count;
   } catch (const std::exception&) {
     return {count, true};

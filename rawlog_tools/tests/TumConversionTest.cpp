@@ -17,9 +17,9 @@
 namespace fs = std::filesystem;
 using dynslam::rawlog_tools::testing::countByLabel;
 using dynslam::rawlog_tools::testing::forEachObservation;
-using dynslam::rawlog_tools::testing::shellQuoted;
-using dynslam::rawlog_tools::testing::rawlogEditInfo;
 using dynslam::rawlog_tools::testing::program;
+using dynslam::rawlog_tools::testing::rawlogEditInfo;
+using dynslam::rawlog_tools::testing::shellQuoted;
 using dynslam::testing::runCommand;
 using namespace mrpt::obs;
 
@@ -34,9 +34,10 @@ const std::vector<std::string> kColourStamps = {"100.000000", "100.033000", "100
 const std::vector<std::string> kDepthStamps = {"100.005000", "100.045000", "100.070000",
                                                "100.110000", "100.200000"};
 const std::vector<std::pair<int, int>> kExpectedPairs = {{0, 0}, {1, 1}, {2, 2}, {4, 3}};
-const std::vector<std::array<double, 4>> kAccelerometer = {
-    {99.990, 0.1, -9.8, 0.2}, {100.050, 0.2, -9.7, 0.3}, {100.120, 0.3, -9.6, 0.4},
-    {100.300, 0.4, -9.5, 0.5}};
+const std::vector<std::array<double, 4>> kAccelerometer = {{99.990, 0.1, -9.8, 0.2},
+                                                           {100.050, 0.2, -9.7, 0.3},
+                                                           {100.120, 0.3, -9.6, 0.4},
+                                                           {100.300, 0.4, -9.5, 0.5}};
 constexpr int kWidth = 32, kHeight = 24;
 
 cv::Mat colourImage(int index) {
@@ -50,7 +51,8 @@ cv::Mat colourImage(int index) {
 cv::Mat depthImage(int index) {
   cv::Mat img(kHeight, kWidth, CV_16UC1);
   for (int r = 0; r < kHeight; ++r)
-    for (int c = 0; c < kWidth; ++c) img.at<uint16_t>(r, c) = uint16_t(5000 * (index + 1) + 37 * r + c);
+    for (int c = 0; c < kWidth; ++c)
+      img.at<uint16_t>(r, c) = uint16_t(5000 * (index + 1) + 37 * r + c);
   img.at<uint16_t>(0, 0) = 0;  // TUM's invalid depth stays 0
   return img;
 }
@@ -71,17 +73,11 @@ void writeTumFolder(const fs::path& dir) {
   }
   std::ofstream acc(dir / "accelerometer.txt");
   acc << "# accelerometer data\n# timestamp ax ay az\n";
-  for (const auto& s : kAccelerometer) acc << s[0] << " " << s[1] << " " << s[2] << " " << s[3] << "\n";
+  for (const auto& s : kAccelerometer)
+    acc << s[0] << " " << s[1] << " " << s[2] << " " << s[3] << "\n";
   std::ofstream gt(dir / "groundtruth.txt");
   gt << "# ground truth trajectory\n# timestamp tx ty tz qx qy qz qw\n"
      << "100.0000 1.0 2.0 3.0 0 0 0 1\n100.0500 1.1 2.0 3.0 0 0 0.0998 0.9950\n";
-}
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace
@@ -95,8 +91,8 @@ class RawlogToolsTum : public ::testing::Test {
     rawlog_ = (fs::path(root_) / "out" / "fr1.rawlog").string();
   }
   dynslam::testing::CommandResult convert(const std::string& extra = "") {
-    return runCommand(program("tum2rawlog") + " --in " + shellQuoted(sequence_.string()) + " --out " +
-                      shellQuoted(rawlog_) + " " + extra);
+    return runCommand(program("tum2rawlog") + " --in " + shellQuoted(sequence_.string()) +
+                      " --out " + shellQuoted(rawlog_) + " " + extra);
   }
   std::string root_, rawlog_;
   fs::path sequence_;
@@ -118,8 +114,8 @@ TEST_F(RawlogToolsTum, AssociatesWithinTwentyMillisecondsAndReportsDrops) {
 TEST_F(RawlogToolsTum, WritesObservationsInTimeOrderWithRawDepthAndColour) {
   ASSERT_EQ(convert().exit_code, 0);
   // Expected sequence: acc0, rgbd(c0), rgbd(c1), acc1, rgbd(c2), rgbd(c4), acc2, acc3.
-  const std::vector<std::string> expectedKinds = {"IMU", "RGBD", "RGBD", "IMU",
-                                                  "RGBD", "RGBD", "IMU", "IMU"};
+  const std::vector<std::string> expectedKinds = {"IMU",  "RGBD", "RGBD", "IMU",
+                                                  "RGBD", "RGBD", "IMU",  "IMU"};
   size_t index = 0, pair = 0, acc = 0;
   double previous = 0;
   forEachObservation(rawlog_, [&](const CObservation::Ptr& o) {
@@ -155,7 +151,8 @@ TEST_F(RawlogToolsTum, WritesObservationsInTimeOrderWithRawDepthAndColour) {
       EXPECT_NEAR(obs->rangeImage(5, 7) * obs->rangeUnits, depth.at<uint16_t>(5, 7) / 5000.0, 1e-6);
       ASSERT_TRUE(obs->intensityImage.isExternallyStored());
       obs->load();
-      EXPECT_EQ(cv::norm(obs->intensityImage.asCvMatRef(), colourImage(colourIndex), cv::NORM_INF), 0.0);
+      EXPECT_EQ(cv::norm(obs->intensityImage.asCvMatRef(), colourImage(colourIndex), cv::NORM_INF),
+                0.0);
     }
     ++index;
   });
@@ -216,7 +213,8 @@ TEST_F(RawlogToolsTum, CopiesGroundTruthBesideTheRawlog) {
   ASSERT_EQ(convert().exit_code, 0);
   const fs::path gt = fs::path(root_) / "out" / "fr1.gt.tum";
   ASSERT_TRUE(fs::exists(gt));
-  EXPECT_EQ(readAll(gt), readAll(sequence_ / "groundtruth.txt"));
+  EXPECT_EQ(dynslam::testing::readTextFile(gt),
+            dynslam::testing::readTextFile((sequence_ / "groundtruth.txt").string()));
 }
 
 TEST_F(RawlogToolsTum, EmbeddedImagesStayInTheRawlog) {
@@ -227,7 +225,8 @@ TEST_F(RawlogToolsTum, EmbeddedImagesStayInTheRawlog) {
     if (const auto obs = std::dynamic_pointer_cast<CObservation3DRangeScan>(o)) {
       EXPECT_FALSE(obs->intensityImage.isExternallyStored());
       const int colourIndex = kExpectedPairs.at(pair++).first;
-      EXPECT_EQ(cv::norm(obs->intensityImage.asCvMatRef(), colourImage(colourIndex), cv::NORM_INF), 0.0);
+      EXPECT_EQ(cv::norm(obs->intensityImage.asCvMatRef(), colourImage(colourIndex), cv::NORM_INF),
+                0.0);
     }
   });
   EXPECT_EQ(pair, 4u);
@@ -239,7 +238,8 @@ TEST_F(RawlogToolsTum, RawlogEditInfoSeesBothSensors) {
   if (!info.available) GTEST_SKIP() << "rawlog-edit (mrpt-apps) is not installed";
   ASSERT_EQ(info.exitCode, 0) << info.output;
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(info.output, m, std::regex(R"(Overall number of objects\s*:\s*(\d+))")));
+  ASSERT_TRUE(
+      std::regex_search(info.output, m, std::regex(R"(Overall number of objects\s*:\s*(\d+))")));
   EXPECT_EQ(m[1].str(), "8");
   ASSERT_TRUE(std::regex_search(info.output, m, std::regex(R"(RGBD\s*/\s*(\d+))"))) << info.output;
   EXPECT_EQ(m[1].str(), "4");

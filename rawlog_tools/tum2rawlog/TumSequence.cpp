@@ -13,8 +13,8 @@ std::vector<ImageEntry> readImageList(const std::string& sequenceDir, const std:
   std::vector<ImageEntry> entries;
   forEachTableRow(file, ' ', [&](const TableSource& source, const TableRow& row) {
     requireFieldCount(source, row, 2);
-    entries.push_back({parseFiniteDouble(source, row, 0),
-                       (fs::path(sequenceDir) / row.fields[1]).string()});
+    entries.push_back(
+        {parseFiniteDouble(source, row, 0), (fs::path(sequenceDir) / row.fields[1]).string()});
   });
   return entries;
 }

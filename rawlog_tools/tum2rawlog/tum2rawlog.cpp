@@ -3,8 +3,8 @@
 // samples become accelerometer-only IMU observations; everything is written in time order.
 #include "TumSequence.h"
 
-#include <dynslam/rawlog_tools/ColourImageStore.h>
 #include <dynslam/core/CommandLine.h>
+#include <dynslam/rawlog_tools/ColourImageStore.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
 #include <dynslam/rawlog_tools/OutputPaths.h>
@@ -48,8 +48,8 @@ constexpr double kTumDepthUnits = 1.0 / 5000.0;
 
 PinholeIntrinsics chooseIntrinsics(const CommandLine& args, const std::string& inDir) {
   const char* flags[] = {"--fx", "--fy", "--cx", "--cy"};
-  const long given = std::count_if(std::begin(flags), std::end(flags),
-                                   [&](const char* f) { return args.has(f); });
+  const long given =
+      std::count_if(std::begin(flags), std::end(flags), [&](const char* f) { return args.has(f); });
   if (given == 4) {
     std::cout << "intrinsics: from flags\n";
     return {*args.optionalDouble("--fx"), *args.optionalDouble("--fy"),
@@ -100,14 +100,14 @@ int convert(const CommandLine& args) {
   std::stable_sort(events.begin(), events.end(),
                    [](const Event& a, const Event& b) { return a.t < b.t; });
 
-  ColourImageStore images(args.has("--embed-images") ? ImageStorage::Embedded
-                                                      : ImageStorage::External,
-                          out.imagesDir);
+  ColourImageStore images(
+      args.has("--embed-images") ? ImageStorage::Embedded : ImageStorage::External, out.imagesDir);
   RawlogWriter writer(out.rawlog);
   for (const Event& event : events) {
     if (!event.isCamera) {
       const auto& s = accSamples[event.index];
-      writer.write(*makeImuObservation(mrpt::Clock::fromDouble(s.t), kImuLabel, std::nullopt, s.acc));
+      writer.write(
+          *makeImuObservation(mrpt::Clock::fromDouble(s.t), kImuLabel, std::nullopt, s.acc));
       continue;
     }
     const auto& colour = colourList[association.pairs[event.index].first];
@@ -134,9 +134,9 @@ int convert(const CommandLine& args) {
     if (ec) throw ConversionError("cannot copy " + groundTruth.string() + ": " + ec.message());
     std::cout << "ground truth: " << out.groundTruth << "\n";
   }
-  std::cout << "wrote " << writer.written() << " observations (" << association.pairs.size()
-            << " " << kRgbdLabel << ", " << accSamples.size() << " " << kImuLabel << ") to "
-            << out.rawlog << "\n";
+  std::cout << "wrote " << writer.written() << " observations (" << association.pairs.size() << " "
+            << kRgbdLabel << ", " << accSamples.size() << " " << kImuLabel << ") to " << out.rawlog
+            << "\n";
   return 0;
 }
 

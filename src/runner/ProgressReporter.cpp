@@ -41,8 +41,8 @@ std::string ProgressReporter::line(size_t frames, double fraction) const {
   const double eta = fraction > 0.001 ? elapsed * (1.0 - fraction) / fraction : NAN;
   char buf[160];
   std::snprintf(buf, sizeof buf, "%3.0f%% | %zu frames | %.1f fps | elapsed %s | ETA %s",
-                100.0 * fraction, frames, framesPerSecond(frames),
-                formatDuration(elapsed).c_str(), formatDuration(eta).c_str());
+                100.0 * fraction, frames, framesPerSecond(frames), formatDuration(elapsed).c_str(),
+                formatDuration(eta).c_str());
   return buf;
 }
 

@@ -10,6 +10,7 @@
 #include <dynslam/io/SensorSync.h>
 #include <dynslam/io/TrajectoryWriter.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -18,7 +19,6 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -93,8 +93,8 @@ int runDynslam(const RunnerArgs& args) {
   std::error_code ec;
   fs::create_directories(args.out, ec);
   if (ec) {
-    std::cerr << "dynslam: error: cannot create output folder '" << args.out << "': "
-              << ec.message() << "\n";
+    std::cerr << "dynslam: error: cannot create output folder '" << args.out
+              << "': " << ec.message() << "\n";
     return 1;
   }
   const std::string summaryPath = (fs::path(args.out) / "summary.json").string();
@@ -162,8 +162,7 @@ int runDynslam(const RunnerArgs& args) {
   }
   rec.poses = trajectory ? trajectory->count() : 0;
   rec.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeSummary(summaryPath, args, rec, sync ? &*sync : nullptr,
-               pipeline ? &*pipeline : nullptr);
+  writeSummary(summaryPath, args, rec, sync ? &*sync : nullptr, pipeline ? &*pipeline : nullptr);
   std::cerr << "dynslam: wrote " << summaryPath << "\n";
   return rec.status == "failed" ? 1 : (rec.status == "interrupted" ? 130 : 0);
 }

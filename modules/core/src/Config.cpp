@@ -45,8 +45,7 @@ IniConfig IniConfig::fromText(const std::string& text, const std::string& source
 void IniConfig::applyOverride(const std::string& assignment) {
   const auto eq = assignment.find('=');
   const auto dot = assignment.find('.');
-  if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 ||
-      dot + 1 == eq)
+  if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
     throw ConfigError("--set '" + assignment + "': expected section.key=value");
   const std::string section = trim(assignment.substr(0, dot));
   const std::string key = trim(assignment.substr(dot + 1, eq - dot - 1));
@@ -85,9 +84,8 @@ void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig&
                        const std::string& section) {
   const auto known = knownKeys(options);
   for (const auto& key : cfg.keys(section)) {
-    const bool found = std::any_of(known.begin(), known.end(), [&](const std::string& k) {
-      return k == key;
-    });
+    const bool found =
+        std::any_of(known.begin(), known.end(), [&](const std::string& k) { return k == key; });
     if (!found)
       throw ConfigError("unknown key '" + key + "' in section [" + section + "] of " +
                         cfg.source() + "; known keys: " + joined(known));

@@ -14,8 +14,8 @@ std::unique_ptr<Stage> StageRegistry::create(const std::string& className) const
   if (it == factories_.end()) {
     std::string known;
     for (const auto& [name, f] : factories_) known += (known.empty() ? "" : ", ") + name;
-    throw ConfigError("unknown stage class '" + className + "'; known classes: " +
-                      (known.empty() ? "(none)" : known));
+    throw ConfigError("unknown stage class '" + className +
+                      "'; known classes: " + (known.empty() ? "(none)" : known));
   }
   return it->second();
 }

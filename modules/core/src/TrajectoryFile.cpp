@@ -13,7 +13,8 @@
 namespace dynslam::core {
 namespace {
 
-[[noreturn]] void failAtLine(const std::string& path, std::size_t line_no, const std::string& what) {
+[[noreturn]] void failAtLine(const std::string& path, std::size_t line_no,
+                             const std::string& what) {
   throw TrajectoryFileError(path + ":" + std::to_string(line_no) + ": " + what);
 }
 
@@ -106,7 +107,8 @@ void forEachDataLine(const std::string& path, std::size_t min_fields, std::size_
 }
 
 void requireSomePoses(const Trajectory& trajectory, const std::string& path) {
-  if (trajectory.empty()) throw TrajectoryFileError("trajectory file '" + path + "' holds no poses");
+  if (trajectory.empty())
+    throw TrajectoryFileError("trajectory file '" + path + "' holds no poses");
 }
 
 }  // namespace
@@ -121,9 +123,12 @@ TrajectoryFormat parseTrajectoryFormat(const std::string& name) {
 
 Trajectory readTrajectory(const std::string& path, TrajectoryFormat format) {
   switch (format) {
-    case TrajectoryFormat::Tum: return readTum(path);
-    case TrajectoryFormat::Kitti: return readKitti(path);
-    case TrajectoryFormat::Euroc: return readEurocCsv(path);
+    case TrajectoryFormat::Tum:
+      return readTum(path);
+    case TrajectoryFormat::Kitti:
+      return readKitti(path);
+    case TrajectoryFormat::Euroc:
+      return readEurocCsv(path);
   }
   throw std::invalid_argument("unknown trajectory format");
 }

@@ -15,7 +15,8 @@ CommandLine parse(std::vector<const char*> args) {
 }  // namespace
 
 TEST(CommandLine, FlagsSwitchesRepeatsAndPositionals) {
-  const auto cl = parse({"ape", "--in", "a.txt", "--set", "x.y=1", "--fast", "--set", "x.z=2", "b"});
+  const auto cl =
+      parse({"ape", "--in", "a.txt", "--set", "x.y=1", "--fast", "--set", "x.z=2", "b"});
   EXPECT_EQ(cl.required("--in"), "a.txt");
   EXPECT_TRUE(cl.has("--fast"));
   EXPECT_EQ(cl.all("--set"), (std::vector<std::string>{"x.y=1", "x.z=2"}));

@@ -40,14 +40,14 @@ class TrajectoryFile : public ::testing::Test {
 }  // namespace
 
 TEST_F(TrajectoryFile, ReadsTumWithCommentsBlanksAndCommas) {
-  const std::string path = writeFile(
-      "a.tum",
-      "# timestamp tx ty tz qx qy qz qw\n"
-      "\n"
-      "1.5 1 2 3 0 0 0 1\n"
-      "   # indented comment\n"
-      "2.5,4,5,6,0,0,0,2\n"            // comma separated, quaternion of length 2
-      "3.5\t7 8 9  0 0 1 0\r\n");     // tab, double blank, CRLF; 180 deg about z
+  const std::string path =
+      writeFile("a.tum",
+                "# timestamp tx ty tz qx qy qz qw\n"
+                "\n"
+                "1.5 1 2 3 0 0 0 1\n"
+                "   # indented comment\n"
+                "2.5,4,5,6,0,0,0,2\n"        // comma separated, quaternion of length 2
+                "3.5\t7 8 9  0 0 1 0\r\n");  // tab, double blank, CRLF; 180 deg about z
   const core::Trajectory t = core::readTum(path);
   ASSERT_EQ(t.size(), 3u);
   EXPECT_EQ(t[0].t, 1.5);
@@ -180,8 +180,7 @@ TEST_F(TrajectoryFile, WriteTumRoundTripsAtFullPrecision) {
   EXPECT_GE(v[7], 0.0);  // qw
   EXPECT_NEAR(std::sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]), 1.0, 1e-15);
 
-  EXPECT_THROW(core::writeTum(dir_ + "/no/such/dir/x.tum", t),
-               core::TrajectoryFileError);
+  EXPECT_THROW(core::writeTum(dir_ + "/no/such/dir/x.tum", t), core::TrajectoryFileError);
 }
 
 TEST_F(TrajectoryFile, ParsesFormatNames) {

@@ -15,9 +15,12 @@ AlignmentMode parseAlignmentMode(const std::string& name) {
 
 const char* toString(AlignmentMode mode) {
   switch (mode) {
-    case AlignmentMode::None: return "none";
-    case AlignmentMode::Se3: return "se3";
-    case AlignmentMode::Sim3: return "sim3";
+    case AlignmentMode::None:
+      return "none";
+    case AlignmentMode::Se3:
+      return "se3";
+    case AlignmentMode::Sim3:
+      return "sim3";
   }
   return "?";
 }

@@ -65,8 +65,8 @@ AssociatedTrajectories associateByTime(const core::Trajectory& first,
   const core::Trajectory& longer = second_longer ? second : first;
   // The offset belongs to the second trajectory's clock: added to it when it is the longer
   // one, subtracted from the first one's otherwise.
-  const MatchingIndices matches = matchingTimeIndices(
-      stampsOf(shorter), stampsOf(longer), max_diff, second_longer ? offset_2 : -offset_2);
+  const MatchingIndices matches = matchingTimeIndices(stampsOf(shorter), stampsOf(longer), max_diff,
+                                                      second_longer ? offset_2 : -offset_2);
   if (matches.first.empty()) {
     std::ostringstream msg;
     msg << "found no matching timestamps between the two trajectories with max. time diff "
@@ -86,8 +86,8 @@ AssociatedTrajectories associateByIndex(const core::Trajectory& first,
                                         const core::Trajectory& second) {
   if (first.size() != second.size()) {
     throw EvaluationError("trajectories paired by index must have the same number of poses (" +
-                          std::to_string(first.size()) + " vs " +
-                          std::to_string(second.size()) + ")");
+                          std::to_string(first.size()) + " vs " + std::to_string(second.size()) +
+                          ")");
   }
   if (first.empty()) throw EvaluationError("trajectories are empty");
   return AssociatedTrajectories{first, second, first.size()};

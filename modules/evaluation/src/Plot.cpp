@@ -39,7 +39,10 @@ double niceStep(double span, int target) {
   const double raw = span / target;
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   const double normalised = raw / magnitude;
-  const double nice = normalised < 1.5 ? 1.0 : normalised < 3.5 ? 2.0 : normalised < 7.5 ? 5.0 : 10.0;
+  const double nice = normalised < 1.5   ? 1.0
+                      : normalised < 3.5 ? 2.0
+                      : normalised < 7.5 ? 5.0
+                                         : 10.0;
   return nice * magnitude;
 }
 
@@ -101,15 +104,18 @@ void pad(double& lo, double& hi, double fraction) {
 cv::Point2d planeCoords(const core::StampedPose& pose, PlotPlane plane) {
   const Eigen::Vector3d p = pose.T_world_body.translation();
   switch (plane) {
-    case PlotPlane::XY: return {p.x(), p.y()};
-    case PlotPlane::XZ: return {p.x(), p.z()};
-    case PlotPlane::YZ: return {p.y(), p.z()};
+    case PlotPlane::XY:
+      return {p.x(), p.y()};
+    case PlotPlane::XZ:
+      return {p.x(), p.z()};
+    case PlotPlane::YZ:
+      return {p.y(), p.z()};
   }
   return {p.x(), p.y()};
 }
 
-void drawPolyline(cv::Mat& img, const std::vector<cv::Point2d>& pts, const Axis& x,
-                  const Axis& y, const cv::Scalar& colour, int thickness) {
+void drawPolyline(cv::Mat& img, const std::vector<cv::Point2d>& pts, const Axis& x, const Axis& y,
+                  const cv::Scalar& colour, int thickness) {
   std::vector<cv::Point> pixels;
   pixels.reserve(pts.size());
   for (const auto& p : pts)
@@ -151,9 +157,11 @@ void drawTopView(cv::Mat& img, const PlotInput& in, int top) {
   const cv::Rect box(kMarginLeft + 10, top + kMarginTop + 10, 210, 52);
   cv::rectangle(img, box, kWhite, cv::FILLED);
   cv::rectangle(img, box, kBlack, 1);
-  cv::line(img, {box.x + 10, box.y + 17}, {box.x + 40, box.y + 17}, kReferenceColour, 2, cv::LINE_AA);
+  cv::line(img, {box.x + 10, box.y + 17}, {box.x + 40, box.y + 17}, kReferenceColour, 2,
+           cv::LINE_AA);
   putLabel(img, "reference", {box.x + 50, box.y + 22});
-  cv::line(img, {box.x + 10, box.y + 37}, {box.x + 40, box.y + 37}, kEstimateColour, 2, cv::LINE_AA);
+  cv::line(img, {box.x + 10, box.y + 37}, {box.x + 40, box.y + 37}, kEstimateColour, 2,
+           cv::LINE_AA);
   putLabel(img, "estimate (aligned)", {box.x + 50, box.y + 42});
 }
 
@@ -169,7 +177,8 @@ void drawErrorPlot(cv::Mat& img, const PlotInput& in, int top) {
   drawAxes(img, x, y, in.time_label, in.error_label);
 
   std::vector<cv::Point2d> pts;
-  for (std::size_t i = 0; i < in.errors.size(); ++i) pts.emplace_back(in.error_times[i], in.errors[i]);
+  for (std::size_t i = 0; i < in.errors.size(); ++i)
+    pts.emplace_back(in.error_times[i], in.errors[i]);
   drawPolyline(img, pts, x, y, kErrorColour, 1);
 
   double mean = 0.0;

@@ -20,22 +20,30 @@ PoseRelation parsePoseRelation(const std::string& name) {
 
 const char* describe(PoseRelation relation) {
   switch (relation) {
-    case PoseRelation::TranslationPart: return "translation part";
-    case PoseRelation::RotationPart: return "rotation part";
-    case PoseRelation::FullTransformation: return "full transformation";
+    case PoseRelation::TranslationPart:
+      return "translation part";
+    case PoseRelation::RotationPart:
+      return "rotation part";
+    case PoseRelation::FullTransformation:
+      return "full transformation";
     case PoseRelation::AngleDeg:
-    case PoseRelation::AngleRad: return "rotation angle";
+    case PoseRelation::AngleRad:
+      return "rotation angle";
   }
   return "?";
 }
 
 const char* unitOf(PoseRelation relation) {
   switch (relation) {
-    case PoseRelation::TranslationPart: return "m";
-    case PoseRelation::AngleDeg: return "deg";
-    case PoseRelation::AngleRad: return "rad";
+    case PoseRelation::TranslationPart:
+      return "m";
+    case PoseRelation::AngleDeg:
+      return "deg";
+    case PoseRelation::AngleRad:
+      return "rad";
     case PoseRelation::RotationPart:
-    case PoseRelation::FullTransformation: return "";
+    case PoseRelation::FullTransformation:
+      return "";
   }
   return "";
 }
@@ -77,12 +85,15 @@ double rotationAngle(const Eigen::Matrix3d& m) {
 
 double poseError(const Eigen::Matrix4d& e, PoseRelation relation) {
   switch (relation) {
-    case PoseRelation::TranslationPart: return e.block<3, 1>(0, 3).norm();
+    case PoseRelation::TranslationPart:
+      return e.block<3, 1>(0, 3).norm();
     case PoseRelation::RotationPart:
       return (e.block<3, 3>(0, 0) - Eigen::Matrix3d::Identity()).norm();
-    case PoseRelation::FullTransformation: return (e - Eigen::Matrix4d::Identity()).norm();
-    case PoseRelation::AngleRad: return rotationAngle(e.block<3, 3>(0, 0));
-    case PoseRelation::AngleDeg: // numpy's rad2deg multiplies by the constant 180/pi.
+    case PoseRelation::FullTransformation:
+      return (e - Eigen::Matrix4d::Identity()).norm();
+    case PoseRelation::AngleRad:
+      return rotationAngle(e.block<3, 3>(0, 0));
+    case PoseRelation::AngleDeg:  // numpy's rad2deg multiplies by the constant 180/pi.
       return rotationAngle(e.block<3, 3>(0, 0)) * (180.0 / kPi);
   }
   return 0.0;

@@ -46,16 +46,15 @@ IdPairs consecutivePathPairs(const core::Trajectory& poses, double delta) {
 }
 }  // namespace
 
-IdPairs filterPairsByPath(const core::Trajectory& poses, double delta, double tol,
-                          bool all_pairs) {
+IdPairs filterPairsByPath(const core::Trajectory& poses, double delta, double tol, bool all_pairs) {
   if (!all_pairs) return consecutivePathPairs(poses, delta);
 
   // Accumulated path length at every pose (running sum, as numpy's cumsum).
   std::vector<double> distances(poses.size(), 0.0);
   for (std::size_t i = 1; i < poses.size(); ++i)
-    distances[i] = distances[i - 1] + (poses[i - 1].T_world_body.translation() -
-                                       poses[i].T_world_body.translation())
-                                          .norm();
+    distances[i] =
+        distances[i - 1] +
+        (poses[i - 1].T_world_body.translation() - poses[i].T_world_body.translation()).norm();
   IdPairs pairs;
   for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
     std::size_t best = i + 1;
@@ -98,8 +97,8 @@ RpeResult computeRpe(const core::Trajectory& ref, const core::Trajectory& est,
   if (options.delta_unit == DeltaUnit::Frames) {
     if (options.delta != std::floor(options.delta))
       throw EvaluationError("delta must be an integer for delta unit frames");
-    result.pairs = filterPairsByIndex(pair_source.size(),
-                                      static_cast<std::size_t>(options.delta), options.all_pairs);
+    result.pairs = filterPairsByIndex(pair_source.size(), static_cast<std::size_t>(options.delta),
+                                      options.all_pairs);
   } else {
     result.pairs = filterPairsByPath(pair_source, options.delta,
                                      options.delta * options.rel_delta_tol, options.all_pairs);

@@ -41,9 +41,9 @@ SimilarityTransform umeyamaAlignment(const Eigen::Matrix3Xd& x, const Eigen::Mat
   if (svd.matrixU().determinant() * svd.matrixV().determinant() < 0.0) s(2, 2) = -1.0;
 
   SimilarityTransform result;
-  result.rotation = svd.matrixU() * s * svd.matrixV().transpose();  // eq. 40
+  result.rotation = svd.matrixU() * s * svd.matrixV().transpose();           // eq. 40
   result.scale = with_scale ? (d.asDiagonal() * s).trace() / sigma_x : 1.0;  // eq. 42
-  result.translation = mean_y - result.scale * (result.rotation * mean_x);  // eq. 41
+  result.translation = mean_y - result.scale * (result.rotation * mean_x);   // eq. 41
   return result;
 }
 

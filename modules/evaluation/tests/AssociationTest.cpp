@@ -87,7 +87,8 @@ TEST(EvalAssociateByTime, ShorterTrajectoryIsMatchedAgainstTheLongerOne) {
 TEST(EvalAssociateByTime, WithEqualLengthsTheSecondCountsAsShorter) {
   // Matching the second's stamps: 0 -> 0, 0.001 -> 0, 5 -> none: 2 pairs, pose 0 of the first
   // used twice. Matching the first's stamps instead would have given 1 pair.
-  const auto a = ev::associateByTime(trajectoryAt({0.0, 1.0, 2.0}), trajectoryAt({0.0, 0.001, 5.0}));
+  const auto a =
+      ev::associateByTime(trajectoryAt({0.0, 1.0, 2.0}), trajectoryAt({0.0, 0.001, 5.0}));
   ASSERT_EQ(a.first.size(), 2u);
   EXPECT_EQ(stamps(a.first), (std::vector<double>{0.0, 0.0}));
   EXPECT_EQ(stamps(a.second), (std::vector<double>{0.0, 0.001}));
@@ -96,8 +97,8 @@ TEST(EvalAssociateByTime, WithEqualLengthsTheSecondCountsAsShorter) {
 
 TEST(EvalAssociateByTime, OffsetAppliesToTheSecondTrajectoryWhicheverIsLonger) {
   // Second shorter: its stamps + offset are compared with the first's.
-  const auto a = ev::associateByTime(trajectoryAt({0.0, 1.0, 2.0, 3.0}),
-                                     trajectoryAt({10.0, 12.0}), 0.01, -10.0);
+  const auto a = ev::associateByTime(trajectoryAt({0.0, 1.0, 2.0, 3.0}), trajectoryAt({10.0, 12.0}),
+                                     0.01, -10.0);
   EXPECT_EQ(stamps(a.first), (std::vector<double>{0.0, 2.0}));
   EXPECT_EQ(stamps(a.second), (std::vector<double>{10.0, 12.0}));
   // Second longer: same offset, same pairs; stamps keep their own clocks.

@@ -8,8 +8,8 @@
 #include <dynslam/evaluation/Statistics.h>
 #include <dynslam/testing/TestEnv.h>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,8 @@ void expectRelativelyNear(double actual, double expected, double rel_tol, const 
       << what << ": " << actual << " vs evo's " << expected;
 }
 
-void expectStatistics(const ev::ErrorStatistics& s, const ev::ErrorStatistics& evo, double rel_tol) {
+void expectStatistics(const ev::ErrorStatistics& s, const ev::ErrorStatistics& evo,
+                      double rel_tol) {
   expectRelativelyNear(s.rmse, evo.rmse, rel_tol, "rmse");
   expectRelativelyNear(s.mean, evo.mean, rel_tol, "mean");
   expectRelativelyNear(s.median, evo.median, rel_tol, "median");
@@ -84,7 +85,7 @@ TEST(EvalEvoReference, Kitti00ApeTranslationSe3) {
   DYNSLAM_REQUIRE_SHARED(orb, "data/evo/KITTI_00_ORB.txt");
   const auto pairs = ev::associateByIndex(core::readKitti(gt), core::readKitti(orb));
   ASSERT_EQ(pairs.first.size(), 4541u);
-  const ev::ErrorStatistics evo{1.3034497145650266, 1.1569971285389768, 1.065624769555848,
+  const ev::ErrorStatistics evo{1.3034497145650266, 1.1569971285389768,  1.065624769555848,
                                 0.6002822693968323, 0.06931322021483087, 3.587949120678954,
                                 7715.073440292808};
   expectStatistics(apeStats(pairs, ev::AlignmentMode::Se3), evo, 1e-9);
@@ -100,7 +101,7 @@ TEST(EvalEvoReference, Kitti00RpeTranslation10mConsecutive) {
   options.delta_unit = ev::DeltaUnit::Meters;
   const ev::RpeResult rpe = ev::computeRpe(pairs.first, pairs.second, options);
   EXPECT_EQ(rpe.pairs.size(), 353u);
-  const ev::ErrorStatistics evo{0.22626134329310163, 0.16901737200653275, 0.13848432516645606,
+  const ev::ErrorStatistics evo{0.22626134329310163, 0.16901737200653275,  0.13848432516645606,
                                 0.1504238127053164,  0.025322719660754993, 1.2722090778658726,
                                 18.07155100048597};
   expectStatistics(ev::computeStatistics(rpe.errors), evo, 1e-9);

@@ -39,7 +39,8 @@ Trajectory curvedPath() {
   Trajectory t;
   for (int i = 0; i < 100; ++i) {
     const double s = 0.1 * i;
-    const Eigen::Matrix3d r = Eigen::AngleAxisd(0.2 * s, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(0.2 * s, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     t.push_back(poseAt(s, {std::cos(s) * 5, std::sin(s) * 3, 0.3 * s}, r));
   }
   return t;
@@ -52,7 +53,7 @@ using Pairs = ev::IdPairs;
 TEST(EvalStatistics, MatchNumpyDefinitions) {
   const ev::ErrorStatistics s = ev::computeStatistics({4.0, 1.0, 3.0, 2.0});
   EXPECT_DOUBLE_EQ(s.mean, 2.5);
-  EXPECT_DOUBLE_EQ(s.median, 2.5);  // mean of the two middle values
+  EXPECT_DOUBLE_EQ(s.median, 2.5);           // mean of the two middle values
   EXPECT_DOUBLE_EQ(s.std, std::sqrt(1.25));  // population std (ddof = 0)
   EXPECT_DOUBLE_EQ(s.sse, 30.0);
   EXPECT_DOUBLE_EQ(s.rmse, std::sqrt(7.5));
@@ -83,7 +84,7 @@ TEST(EvalPoseRelations, ClosedFormValues) {
   const double angle = 0.3;
   Eigen::Matrix4d e = Eigen::Matrix4d::Identity();
   e.block<3, 3>(0, 0) = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 2) / 3.0).toRotationMatrix();
-  e.block<3, 1>(0, 3) = Eigen::Vector3d(3, 4, 12);  // norm 13
+  e.block<3, 1>(0, 3) = Eigen::Vector3d(3, 4, 12);                 // norm 13
   const double rot_part = 2.0 * std::sqrt(1.0 - std::cos(angle));  // |R - I|_F
   EXPECT_NEAR(ev::poseError(e, ev::PoseRelation::TranslationPart), 13.0, 1e-12);
   EXPECT_NEAR(ev::poseError(e, ev::PoseRelation::RotationPart), rot_part, 1e-12);
@@ -114,7 +115,8 @@ TEST(EvalApe, TranslationAndRotationErrors) {
     p.T_world_body = p.T_world_body * Eigen::Translation3d(0.5, 0, 0) *
                      Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY());
   }
-  for (double e : ev::computeApe(ref, est, ev::PoseRelation::TranslationPart)) EXPECT_NEAR(e, 0.5, 1e-12);
+  for (double e : ev::computeApe(ref, est, ev::PoseRelation::TranslationPart))
+    EXPECT_NEAR(e, 0.5, 1e-12);
   for (double e : ev::computeApe(ref, est, ev::PoseRelation::AngleRad)) EXPECT_NEAR(e, 0.1, 1e-12);
   EXPECT_THROW(ev::computeApe(ref, Trajectory(ref.begin(), ref.end() - 1),
                               ev::PoseRelation::TranslationPart),
@@ -134,8 +136,7 @@ TEST(EvalRpePairs, ByPathAllPairsLikeEvoFilterTests) {
   EXPECT_EQ(ev::filterPairsByPath(poses_1, 1.0, 0.0, true), (Pairs{{0, 2}, {2, 3}}));
   EXPECT_TRUE(ev::filterPairsByPath(poses_1, 2.5, 0.0, true).empty());
   EXPECT_EQ(ev::filterPairsByPath(along({0, 0.5, 0.99, 1.0}), 1.0, 0.001, true), (Pairs{{0, 3}}));
-  const Trajectory poses_3 =
-      along({0.0, 0.9, 0.99, 0.999, 0.9999, 0.99999, 0.999999, 0.9999999});
+  const Trajectory poses_3 = along({0.0, 0.9, 0.99, 0.999, 0.9999, 0.99999, 0.999999, 0.9999999});
   EXPECT_EQ(ev::filterPairsByPath(poses_3, 1.0, 0.2, true), (Pairs{{0, 7}}));
 }
 
@@ -161,8 +162,8 @@ TEST(EvalRpePairs, ByPathConsecutiveStartsWhereThePathFirstReachesDelta) {
 TEST(EvalRpe, InvariantToAGlobalTransformAndDetectsScale) {
   const Trajectory ref = curvedPath();
   Trajectory est = ref;
-  const Eigen::Isometry3d g =
-      Eigen::Translation3d(10, -4, 2) * Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 1, 0).normalized());
+  const Eigen::Isometry3d g = Eigen::Translation3d(10, -4, 2) *
+                              Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 1, 0).normalized());
   for (auto& p : est) p.T_world_body = g * p.T_world_body;
   ev::RpeOptions options;
   options.delta = 5;
@@ -179,7 +180,8 @@ TEST(EvalRpe, InvariantToAGlobalTransformAndDetectsScale) {
   ASSERT_EQ(r.pairs.size(), 99u);
   for (std::size_t k = 0; k < r.pairs.size(); ++k) {
     const auto [i, j] = r.pairs[k];
-    const double step = (ref[j].T_world_body.translation() - ref[i].T_world_body.translation()).norm();
+    const double step =
+        (ref[j].T_world_body.translation() - ref[i].T_world_body.translation()).norm();
     EXPECT_NEAR(r.errors[k], 0.1 * step, 1e-12);
   }
   options.delta = 1.5;
@@ -209,7 +211,8 @@ TEST(EvalAlignment, Se3Sim3AndOrigin) {
   const Trajectory ref = curvedPath();
   Trajectory moved = ref;
   ev::SimilarityTransform known;
-  known.rotation = Eigen::AngleAxisd(-0.4, Eigen::Vector3d(0.2, 1, 0.1).normalized()).toRotationMatrix();
+  known.rotation =
+      Eigen::AngleAxisd(-0.4, Eigen::Vector3d(0.2, 1, 0.1).normalized()).toRotationMatrix();
   known.translation = Eigen::Vector3d(3, 2, 1);
   known.scale = 0.8;
   ev::applySimilarity(known, moved);
@@ -217,7 +220,8 @@ TEST(EvalAlignment, Se3Sim3AndOrigin) {
   Trajectory est = moved;
   const ev::AlignmentResult sim3 = ev::alignTrajectory(ref, est, ev::AlignmentMode::Sim3, false);
   EXPECT_NEAR(sim3.umeyama.scale, 1.0 / 0.8, 1e-12);
-  for (double e : ev::computeApe(ref, est, ev::PoseRelation::FullTransformation)) EXPECT_NEAR(e, 0.0, 1e-9);
+  for (double e : ev::computeApe(ref, est, ev::PoseRelation::FullTransformation))
+    EXPECT_NEAR(e, 0.0, 1e-9);
 
   // SE(3) cannot undo the scale: error stays, but below the unaligned one.
   Trajectory est_se3 = moved;

@@ -3,8 +3,8 @@
 #include <dynslam/evaluation/EvaluationError.h>
 #include <dynslam/evaluation/Umeyama.h>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <random>
 
@@ -74,13 +74,14 @@ TEST(EvalUmeyama, ScaleEstimateMatchesUmeyamaFormulaOnNoisyData) {
   Eigen::Matrix3Xd y = transformed(x, knownRotation(), Eigen::Vector3d(1, 2, 3), 1.7);
   std::mt19937 rng(5);
   std::normal_distribution<double> noise(0.0, 0.05);
-  for (int i = 0; i < y.cols(); ++i) y.col(i) += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  for (int i = 0; i < y.cols(); ++i)
+    y.col(i) += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
   const ev::SimilarityTransform fit = ev::umeyamaAlignment(x, y, true);
   const Eigen::Matrix4d eigen_fit = Eigen::umeyama(x, y, true);
   const double eigen_scale = std::cbrt(eigen_fit.block<3, 3>(0, 0).determinant());
   EXPECT_NEAR(fit.scale, eigen_scale, 1e-12);
-  EXPECT_NEAR((fit.rotation - eigen_fit.block<3, 3>(0, 0) / eigen_scale).cwiseAbs().maxCoeff(),
-              0.0, 1e-12);
+  EXPECT_NEAR((fit.rotation - eigen_fit.block<3, 3>(0, 0) / eigen_scale).cwiseAbs().maxCoeff(), 0.0,
+              1e-12);
   EXPECT_NEAR((fit.translation - eigen_fit.block<3, 1>(0, 3)).cwiseAbs().maxCoeff(), 0.0, 1e-10);
   EXPECT_NEAR(fit.scale, 1.7, 0.01);
 }

@@ -2,11 +2,11 @@
 
 #include "dynslam/io/DepthRegistration.h"
 
+#include <mrpt/core/Clock.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
-#include <mrpt/core/Clock.h>
 
 #include <opencv2/imgproc.hpp>
 
@@ -33,8 +33,8 @@ Eigen::Isometry3d toEigen(const mrpt::poses::CPose3D& p) {
 }
 
 std::string describe(const mrpt::obs::CObservation& obs) {
-  return std::string(obs.GetRuntimeClass()->className) + " '" + obs.sensorLabel + "' at t=" +
-         std::to_string(mrpt::Clock::toDouble(obs.timestamp));
+  return std::string(obs.GetRuntimeClass()->className) + " '" + obs.sensorLabel +
+         "' at t=" + std::to_string(mrpt::Clock::toDouble(obs.timestamp));
 }
 
 }  // namespace

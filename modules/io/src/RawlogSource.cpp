@@ -59,8 +59,8 @@ mrpt::obs::CObservation::Ptr RawlogSource::next() {
       throw RawlogError("rawlog '" + path_ + "' is truncated or corrupt at entry #" +
                         std::to_string(entries_) + " (byte " +
                         std::to_string(stream_->compressedPosition()) + " of " +
-                        std::to_string(stream_->getTotalBytesCount()) + "): " +
-                        (zerr.empty() ? firstLine(e.what()) : zerr));
+                        std::to_string(stream_->getTotalBytesCount()) +
+                        "): " + (zerr.empty() ? firstLine(e.what()) : zerr));
     }
     ++entries_;
     if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) return obs;
@@ -69,8 +69,8 @@ mrpt::obs::CObservation::Ptr RawlogSource::next() {
       continue;
     }
     if (std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj)) continue;  // odometry
-    throw RawlogError("rawlog '" + path_ + "': entry #" + std::to_string(entries_ - 1) +
-                      " is a " + obj->GetRuntimeClass()->className +
+    throw RawlogError("rawlog '" + path_ + "': entry #" + std::to_string(entries_ - 1) + " is a " +
+                      obj->GetRuntimeClass()->className +
                       ", not an observation, sensory frame or action");
   }
   auto obs = pending_.front();

@@ -54,9 +54,9 @@ void SensorSync::checkOrder(const mrpt::obs::CObservation& obs, double t,
       std::string(obs.GetRuntimeClass()->className) + " '" + obs.sensorLabel + "'";
   const auto it = last_t_.find(sensor);
   if (it != last_t_.end() && (t < it->second || (strictly_increasing && t == it->second)))
-    throw SyncError("out-of-order timestamp: observation #" +
-                    std::to_string(counts_.observations - 1) + " (" + sensor + ") at t=" +
-                    stamp(t) + " is not after the previous one at t=" + stamp(it->second));
+    throw SyncError(
+        "out-of-order timestamp: observation #" + std::to_string(counts_.observations - 1) + " (" +
+        sensor + ") at t=" + stamp(t) + " is not after the previous one at t=" + stamp(it->second));
   last_t_[sensor] = t;
 }
 

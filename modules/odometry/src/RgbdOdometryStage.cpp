@@ -93,8 +93,8 @@ void RgbdOdometryStage::configure(const core::IniConfig& cfg, const std::string&
     impl_->odometry =
         cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff);
   else if (o.method == "icp")
-    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth,
-                                                    o.max_depth_diff, o.max_points_part);
+    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff,
+                                                    o.max_points_part);
   else
     throw core::ConfigError("[" + section + "] method = '" + o.method + "' in " + cfg.source() +
                             ": expected rgbd_icp, rgbd or icp");
@@ -123,8 +123,7 @@ void RgbdOdometryStage::process(core::Frame& frame) {
   };
   if (!s.keyframe) {
     const auto& k = frame.intrinsics;
-    s.odometry->setCameraMatrix(
-        (cv::Mat_<double>(3, 3) << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1));
+    s.odometry->setCameraMatrix((cv::Mat_<double>(3, 3) << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1));
     s.keyframe = makeKeyframe();
     ++keyframes_;
     ++frames_;

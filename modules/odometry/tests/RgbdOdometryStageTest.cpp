@@ -7,12 +7,12 @@
 
 using namespace dynslam;
 
-
 TEST(RgbdOdometry, RecoversAKnownCameraMotion) {
   odometry::RgbdOdometryStage stage;
   stage.configure(core::IniConfig::fromText(""), "RgbdOdometry");
 
-  const auto truth = dynslam::testing::handheldPath(25);  // long enough for several keyframe changes
+  const auto truth =
+      dynslam::testing::handheldPath(25);  // long enough for several keyframe changes
   const auto camera = dynslam::testing::vgaCamera();
   double worstT = 0, worstR = 0;
   for (size_t i = 0; i < truth.size(); ++i) {

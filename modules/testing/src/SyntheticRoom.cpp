@@ -15,8 +15,8 @@ core::CameraIntrinsics vgaCamera() {
   return k;
 }
 
-void renderRoom(const Eigen::Isometry3d& T_world_camera, const core::CameraIntrinsics& k, cv::Mat& rgb,
-                cv::Mat& depth) {
+void renderRoom(const Eigen::Isometry3d& T_world_camera, const core::CameraIntrinsics& k,
+                cv::Mat& rgb, cv::Mat& depth) {
   rgb.create(k.height, k.width, CV_8UC3);
   depth.create(k.height, k.width, CV_32FC1);
   const Eigen::Vector3d origin = T_world_camera.translation();

@@ -43,8 +43,7 @@ StoredColourImage ColourImageStore::storeFile(const std::string& imageFile,
   fs::copy_file(imageFile, fs::path(imagesDir_) / stored.externalName,
                 fs::copy_options::overwrite_existing, ec);
   if (ec)
-    throw ConversionError("cannot copy " + imageFile + " into " + imagesDir_ + ": " +
-                          ec.message());
+    throw ConversionError("cannot copy " + imageFile + " into " + imagesDir_ + ": " + ec.message());
   return stored;
 }
 

@@ -39,11 +39,11 @@ std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const Rg
   if (frame.depth.empty() || frame.depth.type() != CV_16UC1)
     throw ConversionError("depth image " + frame.depthSourceName + " is not 16-bit single-channel");
   if (frame.colour.width != frame.depth.cols || frame.colour.height != frame.depth.rows)
-    throw ConversionError("depth image " + frame.depthSourceName + " is " +
-                          std::to_string(frame.depth.cols) + "x" + std::to_string(frame.depth.rows) +
-                          " but its colour image is " + std::to_string(frame.colour.width) + "x" +
-                          std::to_string(frame.colour.height) +
-                          " (registered frames must have the same size)");
+    throw ConversionError(
+        "depth image " + frame.depthSourceName + " is " + std::to_string(frame.depth.cols) + "x" +
+        std::to_string(frame.depth.rows) + " but its colour image is " +
+        std::to_string(frame.colour.width) + "x" + std::to_string(frame.colour.height) +
+        " (registered frames must have the same size)");
 
   auto obs = std::make_shared<mrpt::obs::CObservation3DRangeScan>();
   obs->timestamp = frame.timestamp;
@@ -63,8 +63,8 @@ std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const Rg
     obs->intensityImage.setExternalStorage(frame.colour.externalName);
   else
     obs->intensityImage = mrpt::img::CImage(frame.colour.pixels, mrpt::img::DEEP_COPY);
-  obs->cameraParamsIntensity = makeCamera(frame.intrinsics, frame.colour.width,
-                                          frame.colour.height);
+  obs->cameraParamsIntensity =
+      makeCamera(frame.intrinsics, frame.colour.width, frame.colour.height);
   // relativePoseIntensityWRTDepth keeps its default: the depth is registered to colour.
   return obs;
 }

@@ -33,8 +33,8 @@ std::vector<std::string> split(const std::string& line, char separator) {
 }
 
 std::string where(const TableSource& source, const TableRow& row, size_t column) {
-  std::string w = source.file + " line " + std::to_string(row.line) + ", column " +
-                  std::to_string(column + 1);
+  std::string w =
+      source.file + " line " + std::to_string(row.line) + ", column " + std::to_string(column + 1);
   if (column < source.columnNames.size() && !source.columnNames[column].empty())
     w += " (" + source.columnNames[column] + ")";
   return w;
@@ -65,13 +65,12 @@ void forEachTableRow(const std::string& file, char separator,
   if (in.bad()) throw ConversionError("read error in " + file);
 }
 
-void requireFieldCount(const TableSource& source, const TableRow& row, size_t count,
-                       bool atLeast) {
+void requireFieldCount(const TableSource& source, const TableRow& row, size_t count, bool atLeast) {
   const bool ok = atLeast ? row.fields.size() >= count : row.fields.size() == count;
   if (!ok)
     throw ConversionError(source.file + " line " + std::to_string(row.line) + ": expected " +
-                          (atLeast ? "at least " : "") + std::to_string(count) +
-                          " fields, found " + std::to_string(row.fields.size()));
+                          (atLeast ? "at least " : "") + std::to_string(count) + " fields, found " +
+                          std::to_string(row.fields.size()));
 }
 
 double parseFiniteDouble(const TableSource& source, const TableRow& row, size_t column) {
@@ -82,8 +81,7 @@ double parseFiniteDouble(const TableSource& source, const TableRow& row, size_t 
   if (text.empty() || *end != '\0' || errno == ERANGE)
     throw ConversionError(where(source, row, column) + ": '" + text + "' is not a number");
   if (!std::isfinite(v))
-    throw ConversionError(where(source, row, column) + ": '" + text +
-                          "' is not a finite number");
+    throw ConversionError(where(source, row, column) + ": '" + text + "' is not a finite number");
   return v;
 }
 

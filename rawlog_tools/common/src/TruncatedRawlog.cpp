@@ -29,8 +29,8 @@ size_t writeRawlogCutInsideObservation(const std::string& source, const std::str
     try {
       object = in.ReadObject();
     } catch (const std::exception&) {
-      throw ConversionError(source + " holds only " + std::to_string(i) +
-                            " objects; need " + std::to_string(completeObservations + 1));
+      throw ConversionError(source + " holds only " + std::to_string(i) + " objects; need " +
+                            std::to_string(completeObservations + 1));
     }
     mrpt::io::CMemoryStream buffer;
     auto bufferArchive = mrpt::serialization::archiveFrom(buffer);

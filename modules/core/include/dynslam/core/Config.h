@@ -24,7 +24,8 @@ class IniConfig {
  public:
   /// Reads `path` (error naming it when it cannot be read), then applies each override
   /// "section.key=value" in order.
-  static IniConfig fromFile(const std::string& path, const std::vector<std::string>& overrides = {});
+  static IniConfig fromFile(const std::string& path,
+                            const std::vector<std::string>& overrides = {});
   static IniConfig fromText(const std::string& text, const std::string& source = "<memory>");
 
   /// Applies one "section.key=value"; throws ConfigError when it is not of that form.

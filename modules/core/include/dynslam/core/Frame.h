@@ -23,7 +23,7 @@ struct CameraIntrinsics {
 /// One IMU sample. A device may give only part of it (TUM's accelerometer-only IMU): the
 /// has_* flags say which vectors hold measurements.
 struct ImuSample {
-  double t = 0.0;                              ///< seconds
+  double t = 0.0;                                  ///< seconds
   Eigen::Vector3d gyro = Eigen::Vector3d::Zero();  ///< rad/s, IMU frame
   Eigen::Vector3d acc = Eigen::Vector3d::Zero();   ///< m/s^2, IMU frame, gravity included
   bool has_gyro = false;
@@ -50,8 +50,8 @@ struct Frame {
   cv::Mat depth;  ///< CV_32FC1, metres along the optical axis, 0 = invalid, registered to rgb
   CameraIntrinsics intrinsics;
 
-  std::vector<ImuSample> imu;   ///< samples with t in (previous frame's t, t]
-  std::vector<GnssFix> gnss;    ///< fixes with t in (previous frame's t, t]
+  std::vector<ImuSample> imu;  ///< samples with t in (previous frame's t, t]
+  std::vector<GnssFix> gnss;   ///< fixes with t in (previous frame's t, t]
 
   /// Camera pose in the world, set by the stage that estimates it.
   std::optional<Eigen::Isometry3d> T_world_camera;

@@ -33,8 +33,7 @@ IdPairs filterPairsByIndex(std::size_t num_poses, std::size_t delta, bool all_pa
 ///    KITTI_00 reference figures). `tol` is unused here, as in evo.
 ///  - all_pairs: for every i < n-1, the j > i whose path length from i is closest to delta
 ///    (first one on ties), kept when within `tol` of delta.
-IdPairs filterPairsByPath(const core::Trajectory& poses, double delta, double tol,
-                          bool all_pairs);
+IdPairs filterPairsByPath(const core::Trajectory& poses, double delta, double tol, bool all_pairs);
 
 struct RpeOptions {
   PoseRelation relation = PoseRelation::TranslationPart;

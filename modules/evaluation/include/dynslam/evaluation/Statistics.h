@@ -7,13 +7,13 @@
 namespace dynslam::evaluation {
 
 struct ErrorStatistics {
-  double rmse = 0.0;    ///< sqrt(mean(e^2))
+  double rmse = 0.0;  ///< sqrt(mean(e^2))
   double mean = 0.0;
   double median = 0.0;
-  double std = 0.0;     ///< population standard deviation (numpy's default, ddof = 0)
+  double std = 0.0;  ///< population standard deviation (numpy's default, ddof = 0)
   double min = 0.0;
   double max = 0.0;
-  double sse = 0.0;     ///< sum of e^2
+  double sse = 0.0;  ///< sum of e^2
 };
 
 /// Throws EvaluationError on an empty array.

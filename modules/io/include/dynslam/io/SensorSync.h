@@ -25,9 +25,9 @@ struct SyncError : std::runtime_error {
 };
 
 struct SensorSyncOptions : mrpt::config::CLoadableOptions {
-  std::string camera_label;  ///< sensorLabel of the RGB-D camera; "" takes any
-  std::string imu_label;     ///< sensorLabel of the IMU; "" takes any
-  std::string gnss_label;    ///< sensorLabel of the GNSS receiver; "" takes any
+  std::string camera_label;                ///< sensorLabel of the RGB-D camera; "" takes any
+  std::string imu_label;                   ///< sensorLabel of the IMU; "" takes any
+  std::string gnss_label;                  ///< sensorLabel of the GNSS receiver; "" takes any
   bool skip_frames_without_depth = false;  ///< false: a frame with no depth is an error
   int min_gnss_fix_quality = 1;            ///< GGA fixes below this quality are dropped
 
@@ -39,8 +39,8 @@ struct SensorSyncOptions : mrpt::config::CLoadableOptions {
 struct SyncCounts {
   size_t observations = 0;
   size_t rgbd = 0, imu = 0, gnss = 0;
-  size_t gnss_dropped = 0;   ///< no GGA, or quality below min_gnss_fix_quality
-  size_t other = 0;          ///< observation types or labels the pipeline does not use
+  size_t gnss_dropped = 0;  ///< no GGA, or quality below min_gnss_fix_quality
+  size_t other = 0;         ///< observation types or labels the pipeline does not use
   size_t frames = 0;
   size_t frames_without_depth = 0;
   std::map<std::string, size_t> by_type;  ///< class name -> count

@@ -12,15 +12,15 @@
 namespace dynslam::odometry {
 
 struct RgbdOdometryOptions : mrpt::config::CLoadableOptions {
-  std::string method = "rgbd_icp";   ///< rgbd_icp | rgbd | icp
-  double min_depth = 0.3;            ///< m; nearer pixels are not used
-  double max_depth = 4.0;            ///< m; farther pixels are not used
-  double max_depth_diff = 0.07;      ///< m; correspondences differing more are rejected
-  double max_points_part = 0.07;     ///< fraction of pixels sampled per iteration
+  std::string method = "rgbd_icp";      ///< rgbd_icp | rgbd | icp
+  double min_depth = 0.3;               ///< m; nearer pixels are not used
+  double max_depth = 4.0;               ///< m; farther pixels are not used
+  double max_depth_diff = 0.07;         ///< m; correspondences differing more are rejected
+  double max_points_part = 0.07;        ///< fraction of pixels sampled per iteration
   double keyframe_translation = 0.10;   ///< m from the keyframe that starts a new one
   double keyframe_rotation_deg = 10.0;  ///< degrees from the keyframe that start a new one
-  double max_translation = 0.5;      ///< m; larger estimated motions count as failures
-  double max_rotation_deg = 30.0;    ///< degrees; larger estimated motions count as failures
+  double max_translation = 0.5;         ///< m; larger estimated motions count as failures
+  double max_rotation_deg = 30.0;       ///< degrees; larger estimated motions count as failures
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

@@ -17,6 +17,11 @@ std::string sourceDir();
 /// A fresh, empty scratch folder for the calling test: <test-tmp>/<suite>.<test>[/sub].
 std::string scratchDir(const std::string& sub = "");
 
+/// The whole content of a file ("" when it cannot be read).
+std::string readTextFile(const std::string& path);
+/// Writes `text` to `path` (truncating) and returns the path.
+std::string writeTextFile(const std::string& path, const std::string& text);
+
 /// Output and exit code of a shell command (stdout and stderr together).
 struct CommandResult {
   int exit_code = -1;
@@ -28,8 +33,8 @@ CommandResult runCommand(const std::string& command);
 
 /// Skips the current test, with the reason, when ../shared/<relative> is absent; otherwise
 /// assigns its full path to `var`.
-#define DYNSLAM_REQUIRE_SHARED(var, relative)                                        \
-  const std::string var = ::dynslam::testing::sharedPath(relative);                  \
-  if (var.empty())                                                                   \
-    GTEST_SKIP() << "needs " << ::dynslam::testing::sharedDir() << "/" << (relative) \
-                 << ", which is absent"
+#define DYNSLAM_REQUIRE_SHARED(var, relative)                                      \
+  const std::string var = ::dynslam::testing::sharedPath(relative);                \
+  if (var.empty())                                                                 \
+  GTEST_SKIP() << "needs " << ::dynslam::testing::sharedDir() << "/" << (relative) \
+               << ", which is absent"
