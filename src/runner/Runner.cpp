@@ -1,7 +1,7 @@
 #include "Runner.h"
 
 #include "BuiltinStages.h"
-#include "ProgressReporter.h"
+#include <dynslam/core/ProgressReporter.h>
 
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Pipeline.h>
@@ -117,7 +117,7 @@ int runDynslam(const RunnerArgs& args) {
                 << ": frames are read and processed, but trajectory.tum stays empty\n";
 
     io::RawlogSource source(args.rawlog);
-    ProgressReporter progress(stderr, !args.quiet && isatty(STDERR_FILENO) != 0);
+    core::ProgressReporter progress(stderr, !args.quiet && isatty(STDERR_FILENO) != 0);
     std::signal(SIGINT, onInterrupt);
     std::vector<core::Frame> ready;
     bool more = true;

@@ -4,7 +4,9 @@
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
+#include <mrpt/system/datetime.h>
 
 #include <cstring>
 
@@ -87,6 +89,31 @@ std::shared_ptr<mrpt::obs::CObservationIMU> makeImuObservation(
     obs->set(IMU_Y_ACC, (*acc)[1]);
     obs->set(IMU_Z_ACC, (*acc)[2]);
   }
+  return obs;
+}
+
+std::shared_ptr<mrpt::obs::CObservationGPS> makeGgaObservation(mrpt::Clock::time_point timestamp,
+                                                               const std::string& sensorLabel,
+                                                               const GgaFix& fix) {
+  auto obs = std::make_shared<mrpt::obs::CObservationGPS>();
+  obs->timestamp = timestamp;
+  obs->sensorLabel = sensorLabel;
+  mrpt::obs::gnss::Message_NMEA_GGA gga;
+  auto& f = gga.fields;
+  f.latitude_degrees = fix.latitude_deg;
+  f.longitude_degrees = fix.longitude_deg;
+  f.altitude_meters = fix.altitude_m;
+  f.fix_quality = static_cast<uint8_t>(fix.fix_quality);
+  f.satellitesUsed = static_cast<uint32_t>(fix.satellites);
+  f.thereis_HDOP = true;
+  f.HDOP = static_cast<float>(fix.hdop);
+  mrpt::system::TTimeParts parts;
+  mrpt::system::timestampToParts(timestamp, parts);
+  f.UTCTime.hour = static_cast<uint8_t>(parts.hour);
+  f.UTCTime.minute = static_cast<uint8_t>(parts.minute);
+  f.UTCTime.sec = parts.second;
+  obs->setMsg(gga);
+  obs->originalReceivedTimestamp = timestamp;
   return obs;
 }
 

@@ -15,6 +15,7 @@
 namespace mrpt::obs {
 class CObservation3DRangeScan;
 class CObservationIMU;
+class CObservationGPS;
 }  // namespace mrpt::obs
 
 namespace dynslam::rawlog_tools {
@@ -53,5 +54,17 @@ std::shared_ptr<mrpt::obs::CObservationIMU> makeImuObservation(
     mrpt::Clock::time_point timestamp, const std::string& sensorLabel,
     const std::optional<std::array<double, 3>>& gyro,
     const std::optional<std::array<double, 3>>& acc);
+
+/// A GNSS fix as an NMEA GGA message (the form MRPT's GNSS grabbers store): latitude and
+/// longitude in degrees, altitude in metres, GGA fix quality, satellites in use and HDOP. The
+/// GGA UTC time field is set from the timestamp.
+struct GgaFix {
+  double latitude_deg = 0, longitude_deg = 0, altitude_m = 0;
+  int fix_quality = 1, satellites = 0;
+  double hdop = 0;
+};
+std::shared_ptr<mrpt::obs::CObservationGPS> makeGgaObservation(mrpt::Clock::time_point timestamp,
+                                                               const std::string& sensorLabel,
+                                                               const GgaFix& fix);
 
 }  // namespace dynslam::rawlog_tools

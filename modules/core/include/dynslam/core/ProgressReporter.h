@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <string>
 
-namespace dynslam::runner {
+namespace dynslam::core {
 
 class ProgressReporter {
  public:
-  /// `interactive`: redraw one line in place (stderr is a terminal).
-  ProgressReporter(std::FILE* out, bool interactive, double plain_interval_s = 5.0);
+  /// `interactive`: redraw one line in place (stderr is a terminal). Plain lines start with
+  /// "[program]".
+  ProgressReporter(std::FILE* out, bool interactive, double plain_interval_s = 5.0,
+                   std::string program = "dynslam");
 
   /// frames done so far and the fraction of the input consumed, in [0, 1].
   void update(size_t frames, double fraction);
@@ -25,9 +27,10 @@ class ProgressReporter {
   std::string line(size_t frames, double fraction) const;
   std::FILE* out_;
   bool interactive_;
+  std::string program_;
   double interval_s_;
   std::chrono::steady_clock::time_point start_, last_;
   bool drawn_ = false;
 };
 
-}  // namespace dynslam::runner
+}  // namespace dynslam::core

@@ -1,4 +1,4 @@
-#include "runner/ProgressReporter.h"
+#include <dynslam/core/ProgressReporter.h>
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <thread>
 
-using dynslam::runner::ProgressReporter;
+using dynslam::core::ProgressReporter;
 
 namespace {
 std::string readAll(std::FILE* f) {

@@ -1,9 +1,9 @@
-#include "ProgressReporter.h"
+#include "dynslam/core/ProgressReporter.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace dynslam::runner {
+namespace dynslam::core {
 namespace {
 double secondsBetween(std::chrono::steady_clock::time_point a,
                       std::chrono::steady_clock::time_point b) {
@@ -11,9 +11,11 @@ double secondsBetween(std::chrono::steady_clock::time_point a,
 }
 }  // namespace
 
-ProgressReporter::ProgressReporter(std::FILE* out, bool interactive, double plain_interval_s)
+ProgressReporter::ProgressReporter(std::FILE* out, bool interactive, double plain_interval_s,
+                                   std::string program)
     : out_(out),
       interactive_(interactive),
+      program_(std::move(program)),
       interval_s_(plain_interval_s),
       start_(std::chrono::steady_clock::now()),
       last_(start_) {}
@@ -59,7 +61,7 @@ void ProgressReporter::update(size_t frames, double fraction) {
     drawn_ = true;
     last_ = now;
   } else if (secondsBetween(last_, now) >= interval_s_) {
-    std::fprintf(out_, "[dynslam] %s\n", line(frames, fraction).c_str());
+    std::fprintf(out_, "[%s] %s\n", program_.c_str(), line(frames, fraction).c_str());
     std::fflush(out_);
     last_ = now;
   }
@@ -68,9 +70,9 @@ void ProgressReporter::update(size_t frames, double fraction) {
 void ProgressReporter::finish(size_t frames) {
   if (interactive_ && drawn_) std::fprintf(out_, "\n");
   const double elapsed = secondsBetween(start_, std::chrono::steady_clock::now());
-  std::fprintf(out_, "[dynslam] processed %zu frames in %s (%.1f fps)\n", frames,
+  std::fprintf(out_, "[%s] processed %zu frames in %s (%.1f fps)\n", program_.c_str(), frames,
                formatDuration(elapsed).c_str(), framesPerSecond(frames));
   std::fflush(out_);
 }
 
-}  // namespace dynslam::runner
+}  // namespace dynslam::core

@@ -1,0 +1,24 @@
+#pragma once
+// Random numbers whose values do not depend on the standard library's implementation (the
+// std:: distributions' outputs are implementation-defined): the same ini and seed must give
+// the same scene everywhere.
+#include <cstdint>
+#include <random>
+
+namespace dynslam::sim {
+
+/// A uniform double in [lo, hi) from the generator's top 53 bits.
+inline double uniformReal(std::mt19937_64& rng, double lo, double hi) {
+  return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
+
+/// A seed for stream `stream` of a run seeded with `seed` (splitmix64 of both), so that frame
+/// i's noise, the IMU's noise and the scene's layout are independent and each reproducible.
+inline uint64_t subSeed(uint64_t seed, uint64_t stream) {
+  uint64_t z = seed + 0x9E3779B97F4A7C15ull * (stream + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace dynslam::sim

@@ -1,0 +1,94 @@
+#pragma once
+// Everything a simulated sequence is made of, one CLoadableOptions struct per ini section, so a
+// scenario is an ini file (params/sim/*.ini) and a sweep is a --set away. Unknown keys and
+// sections are errors (core::loadOptionsStrict / rejectUnknownSections).
+#include <dynslam/core/Config.h>
+#include <dynslam/sim/GnssSynthesizer.h>
+#include <dynslam/sim/ImuSynthesizer.h>
+#include <dynslam/sim/SensorNoise.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+
+namespace dynslam::sim {
+
+/// [Scenario]: the world and the sensor's image.
+struct WorldOptions : mrpt::config::CLoadableOptions {
+  std::string scene = "room";  ///< room (more kinds land with outdoor_street / market_crowd)
+  uint64_t seed = 1;           ///< every random choice and all noise derive from it
+  double duration = 30.0;      ///< s
+  double start_time = 1.7e9;   ///< s since the Unix epoch of the first frame (rawlog stamps)
+  double fps = 30.0;
+  int width = 640, height = 480;
+  double fx = 525, fy = 525, cx = 319.5, cy = 239.5;
+  double room_size_x = 5.0, room_size_y = 6.0, room_height = 2.8;  ///< m
+  int shelves = 4;                                                 ///< shelf units along the walls
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/// [Camera]: how the sensor moves and where the camera sits on the IMU (body) frame.
+struct CameraMotionOptions : mrpt::config::CLoadableOptions {
+  std::string path = "orbit";   ///< orbit: handheld circling the room's centre
+  double orbit_radius = 1.8;    ///< m (people keep 0.7 m inside this circle)
+  double orbit_period = 24.0;   ///< s per turn (rotation rate = 360 / period deg/s)
+  double height = 1.4;          ///< m
+  double bob_amplitude = 0.04;  ///< m of vertical hand motion
+  double look_at_height = 1.2;  ///< m; the camera looks across the room at this height
+  double knot_interval = 0.25;  ///< s between spline control points
+  /// Camera optical centre in the IMU frame (m) and a small extra rotation (deg, roll pitch
+  /// yaw about the IMU axes) on top of the axis change optical -> body.
+  double cam_x = 0.03, cam_y = -0.01, cam_z = 0.02;
+  double cam_roll_deg = 0.5, cam_pitch_deg = -0.3, cam_yaw_deg = 0.2;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/// [People]: walkers and people standing still.
+struct PeopleOptions : mrpt::config::CLoadableOptions {
+  int walkers = 3;
+  int standing = 1;
+  double speed = 1.2;                ///< m/s
+  std::string interaction = "high";  ///< high: paths cross in front of the camera; low: along walls
+  double stride = 1.4;               ///< m per gait cycle (two steps)
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/// [Imu], [Gnss], [Noise] wrap the synthesizers' option structs.
+struct ImuSectionOptions : mrpt::config::CLoadableOptions {
+  ImuNoiseOptions imu;
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+struct GnssSectionOptions : mrpt::config::CLoadableOptions {
+  bool enabled = false;
+  GnssOptions gnss;
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+struct NoiseSectionOptions : mrpt::config::CLoadableOptions {
+  RgbdNoiseOptions rgbd;
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+struct ScenarioOptions {
+  WorldOptions world;
+  CameraMotionOptions camera;
+  PeopleOptions people;
+  ImuSectionOptions imu;
+  GnssSectionOptions gnss;
+  NoiseSectionOptions noise;
+
+  /// Loads every section strictly and rejects sections no struct reads.
+  void load(const core::IniConfig& cfg);
+};
+
+}  // namespace dynslam::sim
