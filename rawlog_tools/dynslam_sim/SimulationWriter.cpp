@@ -36,10 +36,10 @@ std::string frameName(size_t index) {
 
 }  // namespace
 
-SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Simulator& simulator)
-    : sim_(simulator),
+SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Sequence& sequence)
+    : sim_(sequence),
       dir_(outDir),
-      start_time_(simulator.options().world.start_time),
+      start_time_(sequence.startTime()),
       rawlog_((fs::create_directories(outDir), (fs::path(outDir) / "sim.rawlog").string())),
       images_(ImageStorage::External, (fs::path(outDir) / "sim_Images").string()) {
   fs::create_directories(fs::path(dir_) / "labels");
@@ -50,9 +50,11 @@ SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Simulat
       "# dynslam-sim object ground truth: one line per frame and object at least partly in view\n"
       "# frame t id class moving tx ty tz qx qy qz qw box_x box_y box_w box_h visible_pixels "
       "visible_fraction\n"
-      "# pose: the object's rigid core in the world (a person's torso centre); box: amodal, in\n"
-      "# pixels, clipped to the image; visible_fraction: visible pixels / pixels it would cover\n"
-      "# with nothing in front of it; labels/NNNNNN.png holds `id` at the visible pixels.\n");
+      "# pose: the object's rigid core in the world (a person's torso centre, a car's body\n"
+      "# centre); box: amodal, in pixels, clipped to the image (an object hidden behind a wall\n"
+      "# is listed with 0 visible pixels); visible_fraction: visible pixels / pixels it would\n"
+      "# cover with nothing in front of it; labels/NNNNNN.png holds `id` at the visible pixels.\n"
+      "# class: person | car; moving: 1 when it moves at t (0: standing person, parked car).\n");
   biases_ = openText(fs::path(dir_) / "imu_biases.txt",
                      "# true IMU biases: t gyro_bias_xyz (rad/s) acc_bias_xyz (m/s^2)\n");
 }
@@ -84,13 +86,14 @@ void SimulationWriter::write(const sim::SimFrame& frame) {
   rgbd.sensorLabel = kRgbdLabel;
   frame.image.depth.convertTo(rgbd.depth, CV_16UC1, 1000.0);  // mm; 0 stays invalid
   rgbd.rangeUnits = 0.001f;
-  rgbd.maxRange = static_cast<float>(sim_.options().noise.rgbd.max_range);
+  rgbd.maxRange = static_cast<float>(sim_.maxRange());
   rgbd.intrinsics = {k.fx, k.fy, k.cx, k.cy};
   rgbd.colour = images_.storePixels(frame.image.rgb, "colour_" + frameName(frame.index));
   rgbd.depthSourceName = "simulated frame " + std::to_string(frame.index);
   rawlog_.write(*makeRgbdObservation(rgbd));
 
-  const std::string labels = (fs::path(dir_) / "labels" / (frameName(frame.index) + ".png")).string();
+  const std::string labels =
+      (fs::path(dir_) / "labels" / (frameName(frame.index) + ".png")).string();
   if (!cv::imwrite(labels, frame.image.label))
     throw ConversionError("cannot write '" + labels + "'");
   core::appendTumLine(groundtruth_, {stamp(frame.t), frame.T_world_camera});
@@ -98,10 +101,10 @@ void SimulationWriter::write(const sim::SimFrame& frame) {
     const Eigen::Quaterniond q(o.T_world_object.rotation());
     const Eigen::Vector3d p = o.T_world_object.translation();
     objects_ << frame.index << ' ' << stamp(frame.t) << ' ' << o.id << ' ' << o.category << ' '
-             << (o.moving ? 1 : 0) << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' '
-             << q.x() << ' ' << q.y() << ' ' << q.z() << ' ' << q.w() << ' ' << o.box.x << ' '
-             << o.box.y << ' ' << o.box.width << ' ' << o.box.height << ' ' << o.visible_pixels
-             << ' ' << o.visible_fraction << '\n';
+             << (o.moving ? 1 : 0) << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x()
+             << ' ' << q.y() << ' ' << q.z() << ' ' << q.w() << ' ' << o.box.x << ' ' << o.box.y
+             << ' ' << o.box.width << ' ' << o.box.height << ' ' << o.visible_pixels << ' '
+             << o.visible_fraction << '\n';
   }
 }
 

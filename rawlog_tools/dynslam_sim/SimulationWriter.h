@@ -9,7 +9,7 @@
 //   imu_biases.txt              true gyro and accelerometer biases at each IMU sample
 #include <dynslam/rawlog_tools/ColourImageStore.h>
 #include <dynslam/rawlog_tools/RawlogWriter.h>
-#include <dynslam/sim/Simulator.h>
+#include <dynslam/sim/SimFrame.h>
 
 #include <fstream>
 #include <string>
@@ -18,7 +18,7 @@ namespace dynslam::rawlog_tools {
 
 class SimulationWriter {
  public:
-  SimulationWriter(const std::string& outDir, const sim::Simulator& simulator);
+  SimulationWriter(const std::string& outDir, const sim::Sequence& sequence);
 
   /// Writes the IMU and GNSS samples up to the frame's time, then the frame.
   void write(const sim::SimFrame& frame);
@@ -31,7 +31,7 @@ class SimulationWriter {
   void writeSamplesUpTo(double t);
   double stamp(double t) const { return start_time_ + t; }
 
-  const sim::Simulator& sim_;
+  const sim::Sequence& sim_;
   std::string dir_;
   double start_time_;
   RawlogWriter rawlog_;

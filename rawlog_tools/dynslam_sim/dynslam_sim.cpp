@@ -6,24 +6,33 @@
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
 #include <dynslam/core/ProgressReporter.h>
+#include <dynslam/sim/Augmenter.h>
 #include <dynslam/sim/Simulator.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <set>
-#include <unistd.h>
 
 namespace {
 const char* kUsage =
     R"(usage: dynslam-sim --config params/sim/NAME.ini --out DIR [--set section.key=value]...
                    [--contact-sheet FILE.png] [--sheet-frames N] [--quiet]
 
-Renders the scenario of NAME.ini (sections [Scenario] [Camera] [People] [Imu] [Gnss] [Noise])
+Renders the scenario of NAME.ini (sections [Scenario] [Camera] [People] [Cars] [Imu] [Gnss]
+[Noise] [Augment]; scene = room | market | street, or augment: a real rawlog with movers)
 and writes in DIR: sim.rawlog (+ sim_Images/), groundtruth.tum, objects.txt (format in its
 header), labels/NNNNNN.png (16-bit instance ids), imu_biases.txt.
 --contact-sheet also writes a PNG of N frames (default 4) as colour | depth | labels.
 )";
+/// The sequence [Scenario] scene asks for: fully synthetic, or a real one with movers inserted.
+std::unique_ptr<dynslam::sim::Sequence> makeSequence(const dynslam::sim::ScenarioOptions& o) {
+  if (o.world.scene == "augment") return std::make_unique<dynslam::sim::Augmenter>(o);
+  return std::make_unique<dynslam::sim::Simulator>(o);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,7 +48,8 @@ int main(int argc, char** argv) {
     const auto cfg = core::IniConfig::fromFile(cl.required("--config"), cl.all("--set"));
     sim::ScenarioOptions options;
     options.load(cfg);
-    const sim::Simulator simulator(options);
+    const std::unique_ptr<sim::Sequence> sequence = makeSequence(options);
+    const sim::Sequence& simulator = *sequence;
     rawlog_tools::SimulationWriter writer(cl.required("--out"), simulator);
 
     const size_t frames = simulator.frameCount();
@@ -48,8 +58,9 @@ int main(int argc, char** argv) {
     std::set<size_t> sheetRows;  // evenly spread, the first and the last frame included
     if (cl.has("--contact-sheet"))
       for (long long r = 0; r < sheetFrames; ++r)
-        sheetRows.insert(sheetFrames == 1 ? 0 : static_cast<size_t>(std::lround(
-                                                    r * (frames - 1.0) / (sheetFrames - 1))));
+        sheetRows.insert(sheetFrames == 1 ? 0
+                                          : static_cast<size_t>(std::lround(r * (frames - 1.0) /
+                                                                            (sheetFrames - 1))));
     core::ProgressReporter progress(stderr, !cl.has("--quiet") && isatty(STDERR_FILENO), 5.0,
                                     "dynslam-sim");
     sim::SimFrame frame;
@@ -60,8 +71,8 @@ int main(int argc, char** argv) {
         char caption[64];
         std::snprintf(caption, sizeof caption, "t = %.1f s, %zu objects", frame.t,
                       frame.objects.size());
-        sheet.addRow(frame.image.rgb, frame.image.depth, frame.image.label,
-                     options.noise.rgbd.max_range, caption);
+        sheet.addRow(frame.image.rgb, frame.image.depth, frame.image.label, simulator.maxRange(),
+                     caption);
       }
       if (!cl.has("--quiet")) progress.update(i + 1, (i + 1.0) / frames);
     }

@@ -6,6 +6,7 @@
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
@@ -34,7 +35,8 @@ std::string simulate(const std::string& out, const std::string& extra = "") {
 size_t countLines(const std::string& text, bool skipComments) {
   std::istringstream in(text);
   size_t n = 0;
-  for (std::string line; std::getline(in, line);) n += !line.empty() && !(skipComments && line[0] == '#');
+  for (std::string line; std::getline(in, line);)
+    n += !line.empty() && !(skipComments && line[0] == '#');
   return n;
 }
 
@@ -87,7 +89,8 @@ TEST(DynslamSim, SameIniSameBytes) {
 TEST(DynslamSim, PipelineReadsTheSimulatedRawlog) {
   const std::string out = dynslam::testing::scratchDir("run");
   simulate(out);
-  const std::string ini = dynslam::testing::writeTextFile(out + "/none.ini", "[pipeline]\nstages =\n");
+  const std::string ini =
+      dynslam::testing::writeTextFile(out + "/none.ini", "[pipeline]\nstages =\n");
   const auto r = runCommand(dynslam::testing::binDir() + "/dynslam --quiet --config " + ini +
                             " --rawlog " + out + "/sim.rawlog --out " + out + "/slam");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -104,4 +107,69 @@ TEST(DynslamSim, UnknownKeyIsAnErrorNamingIt) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("unknown key 'walkerz' in section [People]"), std::string::npos)
       << r.output;
+}
+
+// Every scenario of params/sim/ (one second of it) writes a rawlog whose counts rawlog-edit
+// reports: 31 RGB-D frames, 201 IMU samples and, outdoors, 11 GNSS fixes.
+struct ScenarioCounts {
+  const char* ini;
+  int gnss;
+};
+
+void PrintTo(const ScenarioCounts& c, std::ostream* os) { *os << c.ini; }
+
+class DynslamSimScenario : public ::testing::TestWithParam<ScenarioCounts> {};
+
+TEST_P(DynslamSimScenario, RawlogEditCountsOneSecond) {
+  const auto& p = GetParam();
+  const std::string out = dynslam::testing::scratchDir(p.ini);
+  const std::string ini = dynslam::testing::sourceDir() + "/params/sim/" + p.ini + ".ini";
+  const auto r = runCommand(program("dynslam-sim") + " --config " + shellQuoted(ini) + " --out " +
+                            shellQuoted(out) + " --set Scenario.duration=1 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto counts = dynslam::rawlog_tools::testing::countByLabel(out + "/sim.rawlog");
+  EXPECT_EQ(counts.at("RGBD"), 31u);
+  EXPECT_EQ(counts.at("IMU"), 201u);
+  EXPECT_EQ(counts.count("GPS") ? counts.at("GPS") : 0u, static_cast<size_t>(p.gnss));
+  const auto info = rawlogEditInfo(out + "/sim.rawlog");
+  if (!info.available) GTEST_SKIP() << "rawlog-edit (Debian mrpt-apps) is not installed";
+  EXPECT_EQ(info.exitCode, 0) << info.output;
+  EXPECT_TRUE(std::regex_search(info.output, std::regex(R"(RGBD\s*/\s*31\s*/)"))) << info.output;
+  EXPECT_TRUE(std::regex_search(info.output, std::regex(R"(IMU\s*/\s*201\s*/)"))) << info.output;
+  if (p.gnss > 0)
+    EXPECT_TRUE(std::regex_search(info.output, std::regex(R"(GPS\s*/\s*11\s*/)"))) << info.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenarios, DynslamSimScenario,
+    ::testing::Values(ScenarioCounts{"static", 0}, ScenarioCounts{"indoor_people_low", 0},
+                      ScenarioCounts{"indoor_people_high", 0}, ScenarioCounts{"corridor_people", 0},
+                      ScenarioCounts{"market_crowd_low", 0}, ScenarioCounts{"market_crowd_high", 0},
+                      ScenarioCounts{"outdoor_street_low", 11},
+                      ScenarioCounts{"outdoor_street_high", 11}),
+    [](const auto& info) { return std::string(info.param.ini); });
+
+// The augmented 7-Scenes scenario end to end: real frames (here the first 30) in, a rawlog with
+// inserted people, an IMU over the real motion and labels out.
+TEST(DynslamSim, AugmentedSevenScenesPieceThroughTheProgram) {
+  DYNSLAM_REQUIRE_SHARED(scenes, "data/7scenes");
+  const std::string out = dynslam::testing::scratchDir("augment");
+  const auto conv = runCommand(program("sevenscenes2rawlog") + " --in " + shellQuoted(scenes) +
+                               " --out " + shellQuoted(out + "/real.rawlog") + " --last 29");
+  ASSERT_EQ(conv.exit_code, 0) << conv.output;
+  const std::string ini = dynslam::testing::sourceDir() + "/params/sim/augmented_7scenes.ini";
+  const auto r = runCommand(program("dynslam-sim") + " --config " + shellQuoted(ini) + " --out " +
+                            shellQuoted(out + "/run") + " --quiet --set Augment.rawlog=" +
+                            shellQuoted(out + "/real.rawlog") + " --set Augment.floor_frames=10");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto counts = dynslam::rawlog_tools::testing::countByLabel(out + "/run/sim.rawlog");
+  EXPECT_EQ(counts.at("RGBD"), 30u);
+  EXPECT_EQ(counts.at("IMU"), 1 + 29 * 200 / 30u) << "200 Hz over the 29 frame intervals";
+  EXPECT_EQ(dynslam::core::readTum(out + "/run/groundtruth.tum").size(), 30u);
+  size_t withPerson = 0;
+  for (const auto& e : fs::directory_iterator(out + "/run/labels"))
+    withPerson += cv::countNonZero(cv::imread(e.path().string(), cv::IMREAD_UNCHANGED)) > 0;
+  EXPECT_GT(withPerson, 0u) << "the inserted people are seen";
+  const std::string objects = readTextFile(out + "/run/objects.txt");
+  EXPECT_NE(objects.find(" person "), std::string::npos);
 }

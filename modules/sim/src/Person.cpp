@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace dynslam::sim {
 namespace {
@@ -27,8 +26,8 @@ Eigen::Isometry3d pitch(double angle) {
 void addLimb(Mesh& mesh, const Eigen::Isometry3d& T_world_person, const Eigen::Vector3d& joint,
              double swing, double bend, double upper_len, double lower_len, double thickness,
              int texture_upper, int texture_lower, uint16_t instance) {
-  const Eigen::Isometry3d upper = T_world_person * translation(joint.x(), joint.y(), joint.z()) *
-                                  pitch(swing);
+  const Eigen::Isometry3d upper =
+      T_world_person * translation(joint.x(), joint.y(), joint.z()) * pitch(swing);
   addBox(mesh, upper * translation(0, 0, -upper_len / 2),
          Eigen::Vector3d(thickness, thickness, upper_len / 2), texture_upper, instance, 0.5);
   const Eigen::Isometry3d lower = upper * translation(0, 0, -upper_len) * pitch(bend);
@@ -39,48 +38,7 @@ void addLimb(Mesh& mesh, const Eigen::Isometry3d& T_world_person, const Eigen::V
 
 }  // namespace
 
-WalkPath::WalkPath(std::vector<Eigen::Vector2d> waypoints, double speed, double start_offset_m)
-    : waypoints_(std::move(waypoints)), speed_(speed), offset_(start_offset_m) {
-  if (waypoints_.empty()) throw std::invalid_argument("WalkPath needs at least one waypoint");
-  cumulative_.push_back(0.0);
-  for (size_t i = 1; i < waypoints_.size(); ++i)
-    cumulative_.push_back(cumulative_.back() + (waypoints_[i] - waypoints_[i - 1]).norm());
-}
-
-Eigen::Vector2d WalkPath::pointAt(double s) const {
-  const double length = cumulative_.back();
-  if (length <= 0) return waypoints_.front();
-  // Back and forth: a loop of twice the length, mirrored on the way back.
-  double u = std::fmod(s, 2 * length);
-  if (u < 0) u += 2 * length;
-  if (u > length) u = 2 * length - u;
-  const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), u);
-  const size_t i = std::clamp<size_t>(static_cast<size_t>(it - cumulative_.begin()), 1,
-                                      waypoints_.size() - 1);
-  const double seg = cumulative_[i] - cumulative_[i - 1];
-  const double a = seg > 0 ? (u - cumulative_[i - 1]) / seg : 0.0;
-  return waypoints_[i - 1] + a * (waypoints_[i] - waypoints_[i - 1]);
-}
-
-void WalkPath::at(double t, Eigen::Vector2d& xy, double& heading) const {
-  const double s = offset_ + distance(t);
-  xy = pointAt(s);
-  if (standing()) {
-    heading = 0;
-    return;
-  }
-  // Heading towards a point 0.4 m ahead, blended with 0.4 m behind: a smooth turn of about a
-  // step's length at the ends instead of an instant reversal.
-  const Eigen::Vector2d ahead = pointAt(s + 0.4), behind = pointAt(s - 0.4);
-  const Eigen::Vector2d dir = ahead - behind;
-  heading = dir.norm() > 1e-6 ? std::atan2(dir.y(), dir.x()) : 0.0;
-  if (dir.norm() < 0.3) {  // at a reversal both points coincide: look ahead only
-    const Eigen::Vector2d d2 = ahead - xy;
-    if (d2.norm() > 1e-6) heading = std::atan2(d2.y(), d2.x());
-  }
-}
-
-PersonPose personPoseAt(const WalkPath& path, double t, double stride) {
+PersonPose personPoseAt(const FloorPath& path, double t, double stride) {
   PersonPose pose;
   Eigen::Vector2d xy;
   double heading = 0;

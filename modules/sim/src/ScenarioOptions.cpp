@@ -5,13 +5,14 @@
 // Nested option structs have keys that differ from their C++ names, so the MRPT_*_CONFIG_VAR
 // macros (which use the variable's spelling) do not fit; these keep one line per key.
 #define SIM_READ(type, field, key) field = c.read_##type(s, key, field)
-#define SIM_WRITE(field, key, comment)                                               \
-  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(),                     \
+#define SIM_WRITE(field, key, comment)                           \
+  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(), \
           mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment)
 
 namespace dynslam::sim {
 
-void WorldOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
+void WorldOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                      const std::string& s) {
   MRPT_LOAD_CONFIG_VAR(scene, string, c, s);
   MRPT_LOAD_CONFIG_VAR(seed, uint64_t, c, s);
   MRPT_LOAD_CONFIG_VAR(duration, double, c, s);
@@ -23,14 +24,19 @@ void WorldOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, co
   MRPT_LOAD_CONFIG_VAR(fy, double, c, s);
   MRPT_LOAD_CONFIG_VAR(cx, double, c, s);
   MRPT_LOAD_CONFIG_VAR(cy, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(render_threads, int, c, s);
   MRPT_LOAD_CONFIG_VAR(room_size_x, double, c, s);
   MRPT_LOAD_CONFIG_VAR(room_size_y, double, c, s);
   MRPT_LOAD_CONFIG_VAR(room_height, double, c, s);
   MRPT_LOAD_CONFIG_VAR(shelves, int, c, s);
+  MRPT_LOAD_CONFIG_VAR(aisles, int, c, s);
+  MRPT_LOAD_CONFIG_VAR(street_length, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(road_width, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(sidewalk_width, double, c, s);
 }
 
 void WorldOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(scene, "room");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(scene, "room | corridor | market | street | augment");
   MRPT_SAVE_CONFIG_VAR_COMMENT(seed, "seed of every random choice and of all noise");
   MRPT_SAVE_CONFIG_VAR_COMMENT(duration, "s");
   MRPT_SAVE_CONFIG_VAR_COMMENT(start_time, "Unix time of the first frame, s");
@@ -41,10 +47,15 @@ void WorldOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std:
   MRPT_SAVE_CONFIG_VAR_COMMENT(fy, "focal length, px");
   MRPT_SAVE_CONFIG_VAR_COMMENT(cx, "principal point, px");
   MRPT_SAVE_CONFIG_VAR_COMMENT(cy, "principal point, px");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(room_size_x, "m");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(render_threads, "0: one per core (the pixels do not depend on it)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(room_size_x, "m (room, corridor, market hall)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(room_size_y, "m");
   MRPT_SAVE_CONFIG_VAR_COMMENT(room_height, "m");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(shelves, "shelf units along the walls");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(shelves, "room: shelf units along the walls");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(aisles, "market: aisles between rows of shelves");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(street_length, "m (street)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(road_width, "m: two lanes and two parking strips");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(sidewalk_width, "m; facades stand behind the sidewalks");
 }
 
 void CameraMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
@@ -53,6 +64,8 @@ void CameraMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   MRPT_LOAD_CONFIG_VAR(orbit_radius, double, c, s);
   MRPT_LOAD_CONFIG_VAR(orbit_period, double, c, s);
   MRPT_LOAD_CONFIG_VAR(height, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(speed, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(ramp, double, c, s);
   MRPT_LOAD_CONFIG_VAR(bob_amplitude, double, c, s);
   MRPT_LOAD_CONFIG_VAR(look_at_height, double, c, s);
   MRPT_LOAD_CONFIG_VAR(knot_interval, double, c, s);
@@ -66,10 +79,12 @@ void CameraMotionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
 
 void CameraMotionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                            const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(path, "orbit (handheld, circling the room's centre)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(path, "orbit (handheld, circling) | drive (robot on the route)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(orbit_radius, "m");
   MRPT_SAVE_CONFIG_VAR_COMMENT(orbit_period, "s per turn");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(height, "m above the floor");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(height, "m; body (IMU) above the floor");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(speed, "m/s (drive)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(ramp, "s of speed-up and slow-down (drive)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(bob_amplitude, "m of vertical hand motion");
   MRPT_SAVE_CONFIG_VAR_COMMENT(look_at_height, "m; height of the point looked at");
   MRPT_SAVE_CONFIG_VAR_COMMENT(knot_interval, "s between spline control points");
@@ -98,6 +113,18 @@ void PeopleOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std
                                "high: paths cross each other in front of the camera; low: along "
                                "the walls");
   MRPT_SAVE_CONFIG_VAR_COMMENT(stride, "m per gait cycle (two steps)");
+}
+
+void CarOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
+  MRPT_LOAD_CONFIG_VAR(driving, int, c, s);
+  MRPT_LOAD_CONFIG_VAR(parked, int, c, s);
+  MRPT_LOAD_CONFIG_VAR(speed, double, c, s);
+}
+
+void CarOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
+  MRPT_SAVE_CONFIG_VAR_COMMENT(driving, "cars driving round the block");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(parked, "cars parked at the kerb (a dynamic class, not moving)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(speed, "m/s");
 }
 
 void ImuSectionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
@@ -189,19 +216,34 @@ void ScenarioOptions::load(const core::IniConfig& cfg) {
   core::loadOptionsStrict(world, cfg, "Scenario");
   core::loadOptionsStrict(camera, cfg, "Camera");
   core::loadOptionsStrict(people, cfg, "People");
+  core::loadOptionsStrict(cars, cfg, "Cars");
   core::loadOptionsStrict(imu, cfg, "Imu");
   core::loadOptionsStrict(gnss, cfg, "Gnss");
   core::loadOptionsStrict(noise, cfg, "Noise");
-  core::rejectUnknownSections(cfg, {"Scenario", "Camera", "People", "Imu", "Gnss", "Noise"});
-  if (world.scene != "room")
-    throw core::ConfigError("[Scenario] scene = '" + world.scene + "' in " + cfg.source() +
-                            ": this version simulates 'room'");
+  core::loadOptionsStrict(augment, cfg, "Augment");
+  core::rejectUnknownSections(
+      cfg, {"Scenario", "Camera", "People", "Cars", "Imu", "Gnss", "Noise", "Augment"});
+  const auto& scene = world.scene;
+  if (scene != "room" && scene != "corridor" && scene != "market" && scene != "street" &&
+      scene != "augment")
+    throw core::ConfigError("[Scenario] scene = '" + scene + "' in " + cfg.source() +
+                            ": expected room, corridor, market, street or augment");
+  if (scene != "street" && scene != "augment" && (cars.driving > 0 || cars.parked > 0))
+    throw core::ConfigError("[Cars] in " + cfg.source() + ": cars drive and park in the street " +
+                            "(and augment) scenes, not in scene = " + scene);
+  if (scene == "augment") {
+    try {
+      augment.validate();
+    } catch (const core::ConfigError& e) {
+      throw core::ConfigError(std::string(e.what()) + " in " + cfg.source());
+    }
+  }
   if (people.interaction != "high" && people.interaction != "low")
     throw core::ConfigError("[People] interaction = '" + people.interaction + "' in " +
                             cfg.source() + ": expected high or low");
-  if (camera.path != "orbit")
+  if (camera.path != "orbit" && camera.path != "drive")
     throw core::ConfigError("[Camera] path = '" + camera.path + "' in " + cfg.source() +
-                            ": expected orbit");
+                            ": expected orbit or drive");
 }
 
 }  // namespace dynslam::sim

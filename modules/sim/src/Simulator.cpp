@@ -1,15 +1,13 @@
 #include "dynslam/sim/Simulator.h"
 
 #include "dynslam/sim/Random.h"
-#include "dynslam/sim/RoomScene.h"
-#include "dynslam/sim/ScenarioPaths.h"
 #include "dynslam/sim/SensorNoise.h"
 #include "dynslam/sim/TrajectoryPaths.h"
 
-#include <opencv2/core.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace dynslam::sim {
 namespace {
@@ -17,76 +15,105 @@ namespace {
 // Independent random streams of one run (see subSeed).
 enum Stream : uint64_t { kSceneStream = 0, kImuStream = 1, kGnssStream = 2, kFrameStreams = 1000 };
 
-/// Camera optical axes (x right, y down, z forward) in the body frame (x forward, y left, z up),
-/// then the small mounting rotation and offset from the ini.
+Scene buildScene(const ScenarioOptions& o, TextureLibrary& textures, std::mt19937_64& rng) {
+  if (o.world.scene == "market") return buildMarketScene(o, textures, rng);
+  if (o.world.scene == "street") return buildStreetScene(o, textures, rng);
+  if (o.world.scene == "room") return buildRoomScene(o, textures, rng);
+  if (o.world.scene == "corridor") return buildCorridorScene(o, textures, rng);
+  throw std::invalid_argument(
+      "the Simulator renders room, corridor, market and street scenes, not '" + o.world.scene +
+      "'");
+}
+
+double polylineLength(const std::vector<Eigen::Vector2d>& p) {
+  double length = 0;
+  for (size_t i = 1; i < p.size(); ++i) length += (p[i] - p[i - 1]).norm();
+  return length;
+}
+
+/// The route driven there and back as often as needed to cover `needed` metres, then cut
+/// there: the robot slows to a stop at the end of the sequence, not somewhere before it.
+std::vector<Eigen::Vector2d> routeOfLength(std::vector<Eigen::Vector2d> route, double needed) {
+  if (route.size() < 2 || polylineLength(route) <= 0)
+    throw std::invalid_argument("the scene has no route for [Camera] path = drive");
+  std::vector<Eigen::Vector2d> out{route.front()};
+  double length = 0;
+  // Appends p; true once `needed` metres are covered (p then cut short to fit exactly).
+  const auto reached = [&](const Eigen::Vector2d& p) {
+    const double step = (p - out.back()).norm();
+    if (length + step >= needed) {
+      out.push_back(out.back() + (p - out.back()) * ((needed - length) / step));
+      return true;
+    }
+    length += step;
+    out.push_back(p);
+    return false;
+  };
+  for (size_t i = 1;; ++i) {
+    if (i == route.size()) {
+      // Turn round through a point 0.7 m beside the end: two right angles instead of a
+      // reversal on the spot, whose heading a spline cannot interpolate.
+      const Eigen::Vector2d d = (route.back() - route[route.size() - 2]).normalized();
+      if (reached(route.back() + 0.7 * Eigen::Vector2d(-d.y(), d.x()))) return out;
+      std::reverse(route.begin(), route.end());
+      i = 1;
+    }
+    if (reached(route[i])) return out;
+  }
+}
+
+SplineTrajectory cameraPath(const ScenarioOptions& o, const Scene& scene) {
+  const auto& c = o.camera;
+  const double duration = o.world.duration;
+  if (c.path == "orbit") {
+    const Eigen::Vector3d centre(scene.orbit_centre.x(), scene.orbit_centre.y(), 0);
+    return makeOrbit(centre, c.orbit_radius, c.height, c.orbit_period, duration,
+                     centre + Eigen::Vector3d(0, 0, c.look_at_height), c.bob_amplitude,
+                     c.knot_interval);
+  }
+  // makeDrivePath's motion lasts knot + length / speed + ramp: cover the duration, then stop.
+  const double needed = std::max(1.0, c.speed * (duration - c.knot_interval));
+  SplineTrajectory path = makeDrivePath(routeOfLength(scene.route, needed), c.speed, c.height,
+                                        c.knot_interval, std::min(c.ramp, needed / c.speed / 2));
+  if (path.endTime() < duration)
+    throw std::invalid_argument("the drive path ends at " + std::to_string(path.endTime()) +
+                                " s, before the duration");
+  return path;
+}
+
+}  // namespace
+
 Eigen::Isometry3d cameraInBody(const CameraMotionOptions& c) {
   Eigen::Matrix3d axes;
   axes << 0, 0, 1, -1, 0, 0, 0, -1, 0;
   const double d = M_PI / 180;
-  const Eigen::Matrix3d mount =
-      (Eigen::AngleAxisd(c.cam_yaw_deg * d, Eigen::Vector3d::UnitZ()) *
-       Eigen::AngleAxisd(c.cam_pitch_deg * d, Eigen::Vector3d::UnitY()) *
-       Eigen::AngleAxisd(c.cam_roll_deg * d, Eigen::Vector3d::UnitX()))
-          .toRotationMatrix();
+  const Eigen::Matrix3d mount = (Eigen::AngleAxisd(c.cam_yaw_deg * d, Eigen::Vector3d::UnitZ()) *
+                                 Eigen::AngleAxisd(c.cam_pitch_deg * d, Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(c.cam_roll_deg * d, Eigen::Vector3d::UnitX()))
+                                    .toRotationMatrix();
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = mount * axes;
   T.translation() = Eigen::Vector3d(c.cam_x, c.cam_y, c.cam_z);
   return T;
 }
 
-/// Bounding box of the projections of the mesh's vertices in front of the camera, clipped to
-/// the image; empty when nothing projects inside.
-cv::Rect amodalBox(const Mesh& mesh, const core::CameraIntrinsics& k,
-                   const Eigen::Isometry3d& T_camera_world) {
-  double u0 = 1e9, v0 = 1e9, u1 = -1e9, v1 = -1e9;
-  for (const auto& tri : mesh)
-    for (const auto& p : tri.p) {
-      const Eigen::Vector3d q = T_camera_world * p;
-      if (q.z() < 0.05) continue;
-      const double u = k.fx * q.x() / q.z() + k.cx, v = k.fy * q.y() / q.z() + k.cy;
-      u0 = std::min(u0, u), v0 = std::min(v0, v), u1 = std::max(u1, u), v1 = std::max(v1, v);
-    }
-  if (u1 < u0) return {};
-  const int x0 = std::max(0, static_cast<int>(std::floor(u0)));
-  const int y0 = std::max(0, static_cast<int>(std::floor(v0)));
-  const int x1 = std::min(k.width, static_cast<int>(std::ceil(u1)) + 1);
-  const int y1 = std::min(k.height, static_cast<int>(std::ceil(v1)) + 1);
-  if (x1 <= x0 || y1 <= y0) return {};
-  return {x0, y0, x1 - x0, y1 - y0};
+core::CameraIntrinsics intrinsicsOf(const WorldOptions& w) {
+  core::CameraIntrinsics k;
+  k.fx = w.fx;
+  k.fy = w.fy;
+  k.cx = w.cx;
+  k.cy = w.cy;
+  k.width = w.width;
+  k.height = w.height;
+  return k;
 }
-
-}  // namespace
 
 Simulator::Simulator(ScenarioOptions options) : options_(std::move(options)) {
   const auto& w = options_.world;
-  camera_.fx = w.fx;
-  camera_.fy = w.fy;
-  camera_.cx = w.cx;
-  camera_.cy = w.cy;
-  camera_.width = w.width;
-  camera_.height = w.height;
-
+  camera_ = intrinsicsOf(w);
   std::mt19937_64 sceneRng(subSeed(w.seed, kSceneStream));
-  buildRoom({w.room_size_x, w.room_size_y, w.room_height, w.shelves}, textures_, static_mesh_,
-            sceneRng);
-
-  // People stay inside the disc the camera circles, 0.7 m clear of the camera.
-  const double region = std::max(0.8, options_.camera.orbit_radius - 0.7);
-  auto paths = makePeoplePaths(options_.people, region, sceneRng);
-  const int skin = textures_.add(makeTexture(TextureKind::Skin, sceneRng()));
-  for (size_t i = 0; i < paths.size(); ++i) {
-    PersonAppearance look;
-    look.shirt_texture = textures_.add(makeTexture(TextureKind::Clothing, sceneRng()));
-    look.trousers_texture = textures_.add(makeTexture(TextureKind::Clothing, sceneRng()));
-    look.skin_texture = skin;
-    look.scale = uniformReal(sceneRng, 0.92, 1.06);
-    people_.push_back({static_cast<uint16_t>(i + 1), std::move(paths[i]), look});
-  }
-
-  const auto& c = options_.camera;
-  trajectory_ = std::make_unique<SplineTrajectory>(
-      makeOrbit(Eigen::Vector3d::Zero(), c.orbit_radius, c.height, c.orbit_period, w.duration,
-                Eigen::Vector3d(0, 0, c.look_at_height), c.bob_amplitude, c.knot_interval));
+  scene_ = buildScene(options_, textures_, sceneRng);
+  trajectory_ = std::make_unique<SplineTrajectory>(cameraPath(options_, scene_));
   T_body_camera_ = cameraInBody(options_.camera);
 
   std::mt19937_64 imuRng(subSeed(w.seed, kImuStream));
@@ -104,50 +131,23 @@ size_t Simulator::frameCount() const {
 
 double Simulator::frameTime(size_t index) const { return index / options_.world.fps; }
 
-Mesh Simulator::agentMesh(const Agent& agent, double t) const {
-  Mesh mesh;
-  addPersonMesh(mesh, personPoseAt(agent.path, t, options_.people.stride), agent.look, agent.id);
-  return mesh;
-}
-
 void Simulator::renderFrame(size_t index, SimFrame& out) const {
   out.index = index;
   out.t = frameTime(index);
   out.T_world_camera = trajectory_->sample(out.t).T_world_body * T_body_camera_;
-  const Eigen::Isometry3d T_camera_world = out.T_world_camera.inverse();
 
-  Mesh mesh = static_mesh_;
-  std::vector<Mesh> agents;
-  for (const auto& agent : people_) {
-    agents.push_back(agentMesh(agent, out.t));
-    mesh.insert(mesh.end(), agents.back().begin(), agents.back().end());
+  Mesh mesh = scene_.static_mesh;
+  std::vector<Mesh> agentMeshes(scene_.agents.size());
+  for (size_t i = 0; i < scene_.agents.size(); ++i) {
+    addAgentMesh(agentMeshes[i], scene_.agents[i], out.t);
+    mesh.insert(mesh.end(), agentMeshes[i].begin(), agentMeshes[i].end());
   }
-  render(mesh, textures_, camera_, out.T_world_camera, out.image);
-
-  out.objects.clear();
-  for (size_t i = 0; i < people_.size(); ++i) {
-    const auto& agent = people_[i];
-    ObjectTruth truth;
-    truth.id = agent.id;
-    truth.box = amodalBox(agents[i], camera_, T_camera_world);
-    if (truth.box.empty()) continue;
-    truth.category = "person";
-    const PersonPose pose = personPoseAt(agent.path, out.t, options_.people.stride);
-    truth.moving = pose.moving;
-    truth.T_world_object = torsoPose(pose, agent.look);
-    truth.visible_pixels = cv::countNonZero(out.image.label(truth.box) == agent.id);
-    // Unoccluded area: the agent alone, rendered only inside its box (a cropped camera).
-    core::CameraIntrinsics crop = camera_;
-    crop.cx -= truth.box.x;
-    crop.cy -= truth.box.y;
-    crop.width = truth.box.width;
-    crop.height = truth.box.height;
-    RenderOutput alone;
-    render(agents[i], textures_, crop, out.T_world_camera, alone);
-    const int full = cv::countNonZero(alone.label);
-    truth.visible_fraction = full > 0 ? std::min(1.0, truth.visible_pixels / double(full)) : 0.0;
-    out.objects.push_back(truth);
-  }
+  RasterizerOptions raster;
+  raster.threads = options_.world.render_threads;
+  raster.background = {scene_.background[0], scene_.background[1], scene_.background[2]};
+  render(mesh, textures_, camera_, out.T_world_camera, out.image, raster);
+  out.objects = agentTruths(scene_.agents, agentMeshes, out.t, textures_, camera_,
+                            out.T_world_camera, out.image.label);
 
   std::mt19937_64 noiseRng(subSeed(options_.world.seed, kFrameStreams + index));
   applyRgbdNoise(out.image, options_.noise.rgbd, noiseRng);

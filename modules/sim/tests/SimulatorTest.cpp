@@ -1,3 +1,5 @@
+#include "SmallScenario.h"
+
 #include <dynslam/sim/Simulator.h>
 
 #include <gtest/gtest.h>
@@ -9,15 +11,7 @@ namespace {
 
 /// indoor_people-like, but short and at a quarter of the resolution so the test stays fast.
 ScenarioOptions smallScenario(uint64_t seed = 3) {
-  ScenarioOptions o;
-  o.world.seed = seed;
-  o.world.duration = 3.0;
-  o.world.fps = 10;
-  o.world.width = 320;
-  o.world.height = 240;
-  o.world.fx = o.world.fy = 262.5;
-  o.world.cx = 159.5;
-  o.world.cy = 119.5;
+  ScenarioOptions o = dynslam::sim::testing::smallScenario("room", 3.0, 10, seed);
   o.people.walkers = 3;
   o.people.standing = 1;
   return o;

@@ -1,76 +1,54 @@
 #pragma once
-// A simulated sequence: the static scene, the agents and the sensor path built once from a
-// ScenarioOptions, then any frame rendered on demand (deterministically: frame i's noise comes
-// from the seed and i alone, so frames may be rendered in any order or in parallel).
-#include <dynslam/sim/GnssSynthesizer.h>
-#include <dynslam/sim/ImuSynthesizer.h>
-#include <dynslam/sim/Mesh.h>
-#include <dynslam/sim/Person.h>
-#include <dynslam/sim/Rasterizer.h>
-#include <dynslam/sim/ScenarioOptions.h>
+// A fully synthetic sequence: the scene ([Scenario] scene = room, corridor, market or
+// street), its agents
+// and the sensor's path built once from a ScenarioOptions, then any frame rendered on demand
+// (deterministically: frame i's noise comes from the seed and i alone, so frames may be
+// rendered in any order or in parallel).
+#include <dynslam/sim/Scene.h>
+#include <dynslam/sim/SimFrame.h>
 #include <dynslam/sim/SplineTrajectory.h>
-#include <dynslam/sim/Texture.h>
-
-#include <opencv2/core/types.hpp>
 
 #include <memory>
-#include <string>
-#include <vector>
 
 namespace dynslam::sim {
 
-/// Ground truth of one object in one frame.
-struct ObjectTruth {
-  uint16_t id = 0;       ///< the value of its pixels in the label image
-  std::string category;  ///< "person" or "car"
-  bool moving = false;
-  Eigen::Isometry3d T_world_object = Eigen::Isometry3d::Identity();  ///< rigid core
-  cv::Rect box;                 ///< amodal 2-D box (whole body, occluded parts too), clipped
-  int visible_pixels = 0;       ///< pixels with its label
-  double visible_fraction = 0;  ///< visible / pixels it would cover with nothing in front
-};
-
-struct SimFrame {
-  size_t index = 0;
-  double t = 0;  ///< s since the start of the sequence
-  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
-  RenderOutput image;                ///< noisy colour and depth, exact labels
-  std::vector<ObjectTruth> objects;  ///< objects at least partly inside the image
-};
-
-class Simulator {
+class Simulator : public Sequence {
  public:
+  /// Throws std::invalid_argument when the scene cannot be built as configured (a hall too
+  /// small for its aisles, a route too short, ...), naming what to change.
   explicit Simulator(ScenarioOptions options);
 
-  size_t frameCount() const;
-  double frameTime(size_t index) const;
-  void renderFrame(size_t index, SimFrame& out) const;
+  size_t frameCount() const override;
+  double frameTime(size_t index) const override;
+  void renderFrame(size_t index, SimFrame& out) const override;
+  const core::CameraIntrinsics& camera() const override { return camera_; }
+  const std::vector<ImuMeasurement>& imu() const override { return imu_; }
+  const std::vector<GnssFixSample>& gnss() const override { return gnss_; }
+  double startTime() const override { return options_.world.start_time; }
+  double maxRange() const override { return options_.noise.rgbd.max_range; }
 
   const ScenarioOptions& options() const { return options_; }
-  const core::CameraIntrinsics& camera() const { return camera_; }
   const SplineTrajectory& trajectory() const { return *trajectory_; }
   /// Camera pose in the IMU (body) frame.
   const Eigen::Isometry3d& T_body_camera() const { return T_body_camera_; }
-  const std::vector<ImuMeasurement>& imu() const { return imu_; }
-  const std::vector<GnssFixSample>& gnss() const { return gnss_; }
+  const std::vector<Agent>& agents() const { return scene_.agents; }
 
  private:
-  struct Agent {
-    uint16_t id;
-    WalkPath path;
-    PersonAppearance look;
-  };
-  Mesh agentMesh(const Agent& agent, double t) const;
-
   ScenarioOptions options_;
   core::CameraIntrinsics camera_;
   TextureLibrary textures_;
-  Mesh static_mesh_;
-  std::vector<Agent> people_;
+  Scene scene_;
   std::unique_ptr<SplineTrajectory> trajectory_;
   Eigen::Isometry3d T_body_camera_ = Eigen::Isometry3d::Identity();
   std::vector<ImuMeasurement> imu_;
   std::vector<GnssFixSample> gnss_;
 };
+
+/// Camera optical axes (x right, y down, z forward) in the body frame (x forward, y left, z
+/// up), then the small mounting rotation and offset of [Camera] cam_*.
+Eigen::Isometry3d cameraInBody(const CameraMotionOptions& camera);
+
+/// Intrinsics of [Scenario] width, height, fx, fy, cx, cy.
+core::CameraIntrinsics intrinsicsOf(const WorldOptions& world);
 
 }  // namespace dynslam::sim

@@ -1,0 +1,54 @@
+#pragma once
+// What a simulated sequence gives per frame (images and object ground truth), and the interface
+// every sequence source implements: the fully synthetic Simulator and the Augmenter that inserts
+// rendered movers into a real RGB-D sequence. The writer (rawlog + ground truth files) and
+// dynslam-sim only see this interface.
+#include <dynslam/core/Frame.h>
+#include <dynslam/sim/GnssSynthesizer.h>
+#include <dynslam/sim/ImuSynthesizer.h>
+#include <dynslam/sim/Rasterizer.h>
+
+#include <Eigen/Geometry>
+#include <opencv2/core/types.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dynslam::sim {
+
+/// Ground truth of one object in one frame.
+struct ObjectTruth {
+  uint16_t id = 0;       ///< the value of its pixels in the label image
+  std::string category;  ///< "person" or "car"
+  bool moving = false;
+  Eigen::Isometry3d T_world_object = Eigen::Isometry3d::Identity();  ///< rigid core
+  cv::Rect box;                 ///< amodal 2-D box (whole body, occluded parts too), clipped
+  int visible_pixels = 0;       ///< pixels with its label
+  double visible_fraction = 0;  ///< visible / pixels it would cover with nothing in front
+};
+
+struct SimFrame {
+  size_t index = 0;
+  double t = 0;  ///< s since the start of the sequence
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+  RenderOutput image;                ///< noisy colour and depth, exact labels
+  std::vector<ObjectTruth> objects;  ///< objects at least partly inside the image
+};
+
+/// A sequence of RGB-D frames with IMU (and GNSS) samples and full ground truth. Frames are
+/// rendered on demand and deterministically (frame i depends on the seed and i alone).
+class Sequence {
+ public:
+  virtual ~Sequence() = default;
+  virtual size_t frameCount() const = 0;
+  virtual double frameTime(size_t index) const = 0;  ///< s since the start
+  virtual void renderFrame(size_t index, SimFrame& out) const = 0;
+  virtual const core::CameraIntrinsics& camera() const = 0;
+  virtual const std::vector<ImuMeasurement>& imu() const = 0;  ///< t in s since the start
+  virtual const std::vector<GnssFixSample>& gnss() const = 0;  ///< t in s since the start
+  virtual double startTime() const = 0;  ///< Unix time of t = 0 (the rawlog stamps)
+  virtual double maxRange() const = 0;   ///< m; the depth sensor's range (0 beyond it)
+};
+
+}  // namespace dynslam::sim

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Renders every scenario of params/sim/ in full, writes a contact sheet of each (colour | depth |
+# instance labels at evenly spread times) to docs/images/sim_<name>.png, and prints what
+# `rawlog-edit --info` counts in each rawlog. The augmented 7-Scenes scenario first converts
+# ../shared/data/7scenes with sevenscenes2rawlog (skipped, saying so, when it is absent).
+#
+#   bash scripts/sim_scenarios.sh [--out DIR] [--only NAME] [--duration S]
+#     --out       where the sequences go (default build/sim; the street ones are ~1 GB each)
+#     --only      one scenario, e.g. --only market_crowd_high
+#     --duration  override every scenario's duration (s), for a quick look
+# Needs a build (bash scripts/setup.sh).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BIN="${BUILD_DIR:-$ROOT/build}/bin"
+OUT="${BUILD_DIR:-$ROOT/build}/sim"
+ONLY=""
+EXTRA=()
+while (($#)); do
+  case "$1" in
+    --out) OUT="$2"; shift 2 ;;
+    --only) ONLY="$2"; shift 2 ;;
+    --duration) EXTRA+=(--set "Scenario.duration=$2"); shift 2 ;;
+    *) echo "sim_scenarios: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
+  esac
+done
+SHARED="${DYNSLAM_SHARED_DIR:-$ROOT/../shared}"
+mkdir -p "$OUT" "$ROOT/docs/images"
+
+counts() {  # "RGBD 901, IMU 6001, GPS 1501" from rawlog-edit's table (run from the folder)
+  (cd "$(dirname "$1")" && rawlog-edit --info -i "$(basename "$1")" 2>&1) |
+    sed -n 's/^Sensor (Label.*: *\([A-Za-z0-9_]*\) *\/ *\([0-9]*\) *\/.*/\1 \2/p' |
+    paste -sd, | sed 's/,/, /g'
+}
+
+for ini in "$ROOT"/params/sim/*.ini; do
+  name="$(basename "$ini" .ini)"
+  [ -z "$ONLY" ] || [ "$ONLY" = "$name" ] || continue
+  args=()
+  if grep -q '^scene *= *augment' "$ini"; then
+    if [ ! -d "$SHARED/data/7scenes" ]; then
+      echo "$name: skipped, $SHARED/data/7scenes is absent"
+      continue
+    fi
+    [ -f "$OUT/7scenes.rawlog" ] ||
+      "$BIN/sevenscenes2rawlog" --in "$SHARED/data/7scenes" --out "$OUT/7scenes.rawlog" >/dev/null
+    args+=(--set "Augment.rawlog=$OUT/7scenes.rawlog")
+  fi
+  start=$SECONDS
+  "$BIN/dynslam-sim" --config "$ini" --out "$OUT/$name" --quiet "${args[@]}" "${EXTRA[@]}" \
+    --contact-sheet "$ROOT/docs/images/sim_$name.png" --sheet-frames 4
+  printf '%-22s %5d s   rawlog-edit: %s\n' "$name" $((SECONDS - start)) \
+    "$(counts "$OUT/$name/sim.rawlog")"
+done
