@@ -24,8 +24,9 @@ using dynslam::testing::runCommand;
 namespace {
 
 /// One second of indoor_people_high: 31 frames, 201 IMU samples.
-std::string simulate(const std::string& out, const std::string& extra = "") {
-  const std::string ini = dynslam::testing::sourceDir() + "/params/sim/indoor_people_high.ini";
+std::string simulate(const std::string& out, const std::string& extra = "",
+                     const std::string& scenario = "indoor_people_high") {
+  const std::string ini = dynslam::testing::sourceDir() + "/params/sim/" + scenario + ".ini";
   const auto r = runCommand(program("dynslam-sim") + " --config " + shellQuoted(ini) + " --out " +
                             shellQuoted(out) + " --set Scenario.duration=1 --quiet " + extra);
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -71,19 +72,24 @@ TEST(DynslamSim, WritesRawlogGroundTruthLabelsAndContactSheet) {
   EXPECT_EQ(sheet.rows, 4 * 240);
 }
 
+// Indoors (people, IMU) and outdoors (cars, GNSS messages too).
 TEST(DynslamSim, SameIniSameBytes) {
-  const std::string a = dynslam::testing::scratchDir("a"), b = dynslam::testing::scratchDir("b");
-  simulate(a);
-  simulate(b);
-  size_t compared = 0;
-  for (const auto& e : fs::recursive_directory_iterator(a)) {
-    if (!e.is_regular_file()) continue;
-    const fs::path rel = fs::relative(e.path(), a);
-    ASSERT_TRUE(fs::exists(fs::path(b) / rel)) << rel;
-    EXPECT_EQ(readTextFile(e.path().string()), readTextFile((fs::path(b) / rel).string())) << rel;
-    ++compared;
+  for (const std::string scenario : {"indoor_people_high", "outdoor_street_high"}) {
+    const std::string a = dynslam::testing::scratchDir(scenario + "_a"),
+                      b = dynslam::testing::scratchDir(scenario + "_b");
+    simulate(a, "", scenario);
+    simulate(b, "", scenario);
+    size_t compared = 0;
+    for (const auto& e : fs::recursive_directory_iterator(a)) {
+      if (!e.is_regular_file()) continue;
+      const fs::path rel = fs::relative(e.path(), a);
+      ASSERT_TRUE(fs::exists(fs::path(b) / rel)) << rel;
+      EXPECT_EQ(readTextFile(e.path().string()), readTextFile((fs::path(b) / rel).string()))
+          << scenario << ": " << rel;
+      ++compared;
+    }
+    EXPECT_GT(compared, 60u) << scenario << ": rawlog, ground truth, 31 labels, 31 colour images";
   }
-  EXPECT_GT(compared, 60u) << "rawlog, ground truth, 31 labels, 31 colour images";
 }
 
 TEST(DynslamSim, PipelineReadsTheSimulatedRawlog) {

@@ -1,6 +1,10 @@
 #include "dynslam/sim/ScenarioOptions.h"
 
+#include "dynslam/sim/ScenarioPaths.h"
+
 #include <mrpt/config/CConfigFileBase.h>
+
+#include <utility>
 
 // Nested option structs have keys that differ from their C++ names, so the MRPT_*_CONFIG_VAR
 // macros (which use the variable's spelling) do not fit; these keep one line per key.
@@ -103,6 +107,7 @@ void PeopleOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   MRPT_LOAD_CONFIG_VAR(speed, double, c, s);
   MRPT_LOAD_CONFIG_VAR(interaction, string, c, s);
   MRPT_LOAD_CONFIG_VAR(stride, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(waypoints, string, c, s);
 }
 
 void PeopleOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
@@ -113,18 +118,21 @@ void PeopleOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std
                                "high: paths cross each other in front of the camera; low: along "
                                "the walls");
   MRPT_SAVE_CONFIG_VAR_COMMENT(stride, "m per gait cycle (two steps)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(waypoints, "extra people: x,y x,y | x,y (one point: standing)");
 }
 
 void CarOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
   MRPT_LOAD_CONFIG_VAR(driving, int, c, s);
   MRPT_LOAD_CONFIG_VAR(parked, int, c, s);
   MRPT_LOAD_CONFIG_VAR(speed, double, c, s);
+  MRPT_LOAD_CONFIG_VAR(waypoints, string, c, s);
 }
 
 void CarOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
   MRPT_SAVE_CONFIG_VAR_COMMENT(driving, "cars driving round the block");
   MRPT_SAVE_CONFIG_VAR_COMMENT(parked, "cars parked at the kerb (a dynamic class, not moving)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(speed, "m/s");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(waypoints, "extra cars: x,y x,y x,y (a loop) | x,y (parked)");
 }
 
 void ImuSectionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
@@ -231,6 +239,18 @@ void ScenarioOptions::load(const core::IniConfig& cfg) {
   if (scene != "street" && scene != "augment" && (cars.driving > 0 || cars.parked > 0))
     throw core::ConfigError("[Cars] in " + cfg.source() + ": cars drive and park in the street " +
                             "(and augment) scenes, not in scene = " + scene);
+  for (const auto& [section, text] :
+       {std::pair{"People", people.waypoints}, std::pair{"Cars", cars.waypoints}}) {
+    try {
+      parseWaypointList(text);
+    } catch (const std::invalid_argument& e) {
+      throw core::ConfigError("[" + std::string(section) + "] waypoints in " + cfg.source() + ": " +
+                              e.what());
+    }
+    if (scene == "augment" && !text.empty())
+      throw core::ConfigError("[" + std::string(section) + "] waypoints in " + cfg.source() +
+                              ": augment mode places its movers on the real floor itself");
+  }
   if (scene == "augment") {
     try {
       augment.validate();

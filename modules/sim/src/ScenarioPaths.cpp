@@ -4,8 +4,45 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
 
 namespace dynslam::sim {
+
+std::vector<std::vector<Eigen::Vector2d>> parseWaypointList(const std::string& text) {
+  std::vector<std::vector<Eigen::Vector2d>> groups;
+  if (text.find_first_not_of(" \t") == std::string::npos) return groups;
+  std::istringstream all(text);
+  for (std::string group; std::getline(all, group, '|');) {
+    std::istringstream points(group);
+    groups.emplace_back();
+    for (std::string point; points >> point;) {
+      double x = 0, y = 0;
+      char comma = 0, extra = 0;
+      std::istringstream xy(point);
+      if (!(xy >> x >> comma >> y) || comma != ',' || (xy >> extra) || !std::isfinite(x) ||
+          !std::isfinite(y))
+        throw std::invalid_argument("'" + point + "' is not a point x,y (metres)");
+      groups.back().emplace_back(x, y);
+    }
+    if (groups.back().empty())
+      throw std::invalid_argument("an empty group in '" + text + "' (two '|' in a row?)");
+  }
+  return groups;
+}
+
+void addListedAgents(const ScenarioOptions& o, std::vector<Agent>& agents, TextureLibrary& textures,
+                     std::mt19937_64& rng) {
+  uint16_t id = 1;
+  for (const auto& a : agents) id = std::max<uint16_t>(id, a.id + 1);
+  for (auto& points : parseWaypointList(o.people.waypoints))
+    agents.push_back(makePerson(id++, FloorPath(std::move(points), o.people.speed), o.people.stride,
+                                textures, rng));
+  for (auto& points : parseWaypointList(o.cars.waypoints))
+    agents.push_back(
+        makeCar(id++, FloorPath(std::move(points), o.cars.speed, 0.0, FloorPath::Mode::Loop, 3.0),
+                textures, rng));
+}
 
 std::vector<FloorPath> makePeoplePaths(const PeopleOptions& p, double radius,
                                        std::mt19937_64& rng) {

@@ -1,6 +1,7 @@
 #include "dynslam/sim/Simulator.h"
 
 #include "dynslam/sim/Random.h"
+#include "dynslam/sim/ScenarioPaths.h"
 #include "dynslam/sim/SensorNoise.h"
 #include "dynslam/sim/TrajectoryPaths.h"
 
@@ -113,6 +114,7 @@ Simulator::Simulator(ScenarioOptions options) : options_(std::move(options)) {
   camera_ = intrinsicsOf(w);
   std::mt19937_64 sceneRng(subSeed(w.seed, kSceneStream));
   scene_ = buildScene(options_, textures_, sceneRng);
+  addListedAgents(options_, scene_.agents, textures_, sceneRng);
   trajectory_ = std::make_unique<SplineTrajectory>(cameraPath(options_, scene_));
   T_body_camera_ = cameraInBody(options_.camera);
 

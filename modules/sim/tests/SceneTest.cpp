@@ -3,6 +3,7 @@
 // DynslamSim tests and the contact-sheet script.
 #include "SmallScenario.h"
 
+#include <dynslam/sim/ScenarioPaths.h>
 #include <dynslam/sim/Simulator.h>
 
 #include <gtest/gtest.h>
@@ -169,4 +170,28 @@ TEST(SimCorridor, RobotDrivesTheCentreLineAndMeetsPeopleHeadOn) {
   EXPECT_GT(seen, 10);
   o.world.room_size_y = 1.2;
   EXPECT_THROW(Simulator{o}, std::invalid_argument) << "too narrow to pass anybody";
+}
+
+TEST(SimListedAgents, PeopleAndCarsOnPathsOfYourOwn) {
+  ScenarioOptions o = dynslam::sim::testing::smallScenario("room", 2, 5, 1);
+  o.people.walkers = 1;
+  o.people.standing = 0;
+  o.people.waypoints = "-1.5,0.5 1.5,0.5 | 0.3,-0.8";
+  o.cars.waypoints = " 0,0 10,0 10,5 ";
+  const Simulator sim(o);
+  ASSERT_EQ(sim.agents().size(), 4u) << "one generated walker, two listed people, one car";
+  const auto& walker = sim.agents()[1];
+  EXPECT_EQ(walker.id, 2);
+  EXPECT_TRUE(agentStateAt(walker, 0).T_world_core.translation().head<2>().isApprox(
+      Eigen::Vector2d(-1.5, 0.5)));
+  const AgentState standing = agentStateAt(sim.agents()[2], 1.0);
+  EXPECT_FALSE(standing.moving);
+  EXPECT_TRUE(standing.T_world_core.translation().head<2>().isApprox(Eigen::Vector2d(0.3, -0.8)));
+  EXPECT_EQ(sim.agents()[3].kind, AgentKind::Car);
+  EXPECT_TRUE(agentStateAt(sim.agents()[3], 1.0).moving);
+
+  EXPECT_EQ(parseWaypointList("").size(), 0u);
+  EXPECT_EQ(parseWaypointList("1,2 3,4|5,6")[1][0], Eigen::Vector2d(5, 6));
+  for (const char* bad : {"1,2 3", "1;2", "1,2 | | 3,4", "1,2,3", "a,b"})
+    EXPECT_THROW(parseWaypointList(bad), std::invalid_argument) << bad;
 }

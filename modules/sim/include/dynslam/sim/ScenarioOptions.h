@@ -71,6 +71,10 @@ struct PeopleOptions : mrpt::config::CLoadableOptions {
   double speed = 1.2;                ///< m/s
   std::string interaction = "high";  ///< high: paths cross in front of the camera; low: along walls
   double stride = 1.4;               ///< m per gait cycle (two steps)
+  /// People on paths of your own, besides the generated ones (not in augment mode): one path per
+  /// `|`-separated group of "x,y" floor points (m, world frame), walked back and forth at
+  /// `speed`; a single point is a person standing there. E.g. "-2,0 2,0 | 0,-1.5".
+  std::string waypoints;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -81,6 +85,9 @@ struct CarOptions : mrpt::config::CLoadableOptions {
   int driving = 0;
   int parked = 0;
   double speed = 8.0;  ///< m/s
+  /// Cars on routes of your own, as [People] waypoints; a car drives its points round as a
+  /// closed loop at `speed`, a single point is a parked car (facing +x).
+  std::string waypoints;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
