@@ -2,6 +2,7 @@
 // The unit of work that flows through the pipeline: one RGB-D image pair plus everything the
 // other sensors said since the previous one. Stages read what earlier stages wrote and add
 // their own output. Kept free of MRPT headers: every stage includes this file.
+#include <dynslam/core/Perception.h>
 #include <dynslam/core/Trajectory.h>
 
 #include <Eigen/Core>
@@ -52,6 +53,15 @@ struct Frame {
 
   std::vector<ImuSample> imu;  ///< samples with t in (previous frame's t, t]
   std::vector<GnssFix> gnss;   ///< fixes with t in (previous frame's t, t]
+
+  /// Perception (method.md sections 1-2), in pipeline order: detector boxes, one depth-threshold
+  /// mask per detection, the tracks after this frame's update.
+  std::vector<Detection> detections;
+  /// True when the detector ran on this very frame; false in real-time mode when it was busy
+  /// and `detections` are empty (the tracker's predictions then stand in for them).
+  bool detections_fresh = false;
+  std::vector<ObjectMask> object_masks;
+  std::vector<Track> tracks;
 
   /// Camera pose in the world, set by the stage that estimates it.
   std::optional<Eigen::Isometry3d> T_world_camera;
