@@ -8,13 +8,15 @@
 namespace {
 const char* kUsage =
     R"(usage: dynslam --config FILE.ini --rawlog FILE.rawlog --out DIR [--set section.key=value]...
-               [--max-frames N] [--quiet]
+               [--max-frames N] [--frames DIR] [--quiet]
 
 Plays FILE.rawlog (RGB-D CObservation3DRangeScan, CObservationIMU, CObservationGPS; observation
 or action/sensory-frame layout) through the stages listed in [pipeline] stages of FILE.ini, and
 writes in DIR:
   trajectory.tum   camera poses (timestamp tx ty tz qx qy qz qw), written as they are estimated
   summary.json     status, counts per observation type, frames, fps, per-stage median times
+--frames DIR also writes DIR/NNNNNN.png per frame: the colour image with the detector boxes, the
+object masks and the tracks (id, class, depth) drawn on it.
 --set overrides one ini value (repeatable). Unknown keys, sections and stage names are errors.
 Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 usage, 130 Ctrl-C.
 )";
@@ -22,8 +24,8 @@ Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 u
 
 int main(int argc, char** argv) {
   return dynslam::core::runProgram("dynslam", [&] {
-    dynslam::core::CommandLine cl({"--config", "--rawlog", "--out", "--max-frames"}, {"--quiet"},
-                                  {"--set"});
+    dynslam::core::CommandLine cl({"--config", "--rawlog", "--out", "--max-frames", "--frames"},
+                                  {"--quiet"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
     args.overrides = cl.all("--set");
     args.max_frames = cl.optionalInteger("--max-frames").value_or(-1);
     args.quiet = cl.has("--quiet");
+    args.frames_dir = cl.valueOr("--frames", "");
     return dynslam::runner::runDynslam(args);
   });
 }

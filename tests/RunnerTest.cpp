@@ -4,6 +4,8 @@
 #include <dynslam/testing/SyntheticObservations.h>
 #include <dynslam/testing/TestEnv.h>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -215,4 +217,19 @@ TEST(Runner, MrptKinectAndRtkRawlogsStreamThroughThePipeline) {
   EXPECT_NE(summary.find("\"mrpt::obs::CObservationGPS\": 691"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"gnss\": 77"), std::string::npos) << "the rear receiver" << summary;
   EXPECT_NE(summary.find("\"frames\": 0"), std::string::npos) << summary;
+}
+
+TEST(Runner, FramesOptionWritesAnAnnotatedPngPerFrame) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 5);
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " +
+                                           dir + "/out --frames " + dir + "/frames"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (int i = 0; i < 5; ++i) {
+    const std::string png = dir + "/frames/00000" + std::to_string(i) + ".png";
+    const cv::Mat img = cv::imread(png);
+    ASSERT_FALSE(img.empty()) << png;
+    EXPECT_EQ(img.size(), cv::Size(320, 240)) << png;
+  }
 }

@@ -1,22 +1,13 @@
 #include "ContactSheet.h"
 
+#include <dynslam/viz/IdColours.h>
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <stdexcept>
 
 namespace dynslam::rawlog_tools {
-namespace {
-
-/// A fixed, well-spread colour per instance id (0 = black) so ids are told apart.
-cv::Vec3b labelColour(uint16_t id) {
-  if (id == 0) return {0, 0, 0};
-  const uint32_t h = id * 2654435761u;
-  return {static_cast<uchar>(64 + (h & 0xBF)), static_cast<uchar>(64 + ((h >> 8) & 0xBF)),
-          static_cast<uchar>(64 + ((h >> 16) & 0xBF))};
-}
-
-}  // namespace
 
 ContactSheet::ContactSheet(int panel_width) : panel_width_(panel_width) {}
 
@@ -28,8 +19,11 @@ void ContactSheet::addRow(const cv::Mat& rgb, const cv::Mat& depth, const cv::Ma
   depthColour.setTo(cv::Scalar(0, 0, 0), invalid);
   cv::Mat labelColours(label.size(), CV_8UC3);
   for (int v = 0; v < label.rows; ++v)
-    for (int u = 0; u < label.cols; ++u)
-      labelColours.at<cv::Vec3b>(v, u) = labelColour(label.at<uint16_t>(v, u));
+    for (int u = 0; u < label.cols; ++u) {
+      const cv::Scalar c = viz::colourForId(label.at<uint16_t>(v, u));
+      labelColours.at<cv::Vec3b>(v, u) =
+          cv::Vec3b(static_cast<uchar>(c[0]), static_cast<uchar>(c[1]), static_cast<uchar>(c[2]));
+    }
 
   const double scale = panel_width_ / static_cast<double>(rgb.cols);
   const cv::Size size(panel_width_, static_cast<int>(rgb.rows * scale + 0.5));

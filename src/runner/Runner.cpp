@@ -1,7 +1,7 @@
 #include "Runner.h"
 
-#include "BuiltinStages.h"
 #include <dynslam/core/ProgressReporter.h>
+#include "BuiltinStages.h"
 
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Pipeline.h>
@@ -9,12 +9,16 @@
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
 #include <dynslam/io/TrajectoryWriter.h>
+#include <dynslam/viz/AnnotatedFrame.h>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -81,6 +85,15 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   j.endObject();
 }
 
+/// DIR/NNNNNN.png: the frame after every stage, as viz::renderAnnotatedFrame draws it.
+void writeAnnotatedFrame(const std::string& dir, const core::Frame& frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06zu.png", frame.index);
+  const std::string path = (fs::path(dir) / name).string();
+  if (!cv::imwrite(path, viz::renderAnnotatedFrame(frame)))
+    throw std::runtime_error("cannot write the annotated frame '" + path + "'");
+}
+
 }  // namespace
 
 int runDynslam(const RunnerArgs& args) {
@@ -98,6 +111,12 @@ int runDynslam(const RunnerArgs& args) {
     return 1;
   }
   const std::string summaryPath = (fs::path(args.out) / "summary.json").string();
+  if (!args.frames_dir.empty()) fs::create_directories(args.frames_dir, ec);
+  if (ec) {
+    std::cerr << "dynslam: error: cannot create the --frames folder '" << args.frames_dir
+              << "': " << ec.message() << "\n";
+    return 1;
+  }
 
   try {
     trajectory.emplace((fs::path(args.out) / "trajectory.tum").string());
@@ -135,6 +154,7 @@ int runDynslam(const RunnerArgs& args) {
           break;
         }
         pipeline->process(frame);
+        if (!args.frames_dir.empty()) writeAnnotatedFrame(args.frames_dir, frame);
         ++rec.frames;
         rec.imu_samples += frame.imu.size();
         rec.gnss_fixes += frame.gnss.size();

@@ -13,6 +13,7 @@ struct RunnerArgs {
   std::vector<std::string> overrides;  ///< "section.key=value"
   long max_frames = -1;                ///< stop after this many frames (-1: all)
   bool quiet = false;                  ///< no progress output
+  std::string frames_dir;  ///< non-empty: an annotated PNG per frame there (viz::AnnotatedFrame)
 };
 
 /// Runs the whole job. Returns the process exit code: 0 on success, 1 when the input or the

@@ -1,0 +1,94 @@
+#include "dynslam/viz/AnnotatedFrame.h"
+
+#include "dynslam/viz/IdColours.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace dynslam::viz {
+namespace {
+
+cv::Mat baseImage(const core::Frame& f) {
+  if (!f.rgb.empty()) return f.rgb.clone();
+  cv::Mat out;
+  if (!f.depth.empty()) {
+    cv::Mat grey;
+    f.depth.convertTo(grey, CV_8UC1, 255.0 / 5.0);  // 0-5 m
+    cv::cvtColor(grey, out, cv::COLOR_GRAY2BGR);
+    return out;
+  }
+  return cv::Mat(480, 640, CV_8UC3, cv::Scalar(0, 0, 0));
+}
+
+/// Text with a dark outline so it reads on any background.
+void label(cv::Mat& img, const std::string& text, cv::Point at, const cv::Scalar& colour,
+           double scale) {
+  at.y = std::max(at.y, 12);
+  cv::putText(img, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, {0, 0, 0}, 3, cv::LINE_AA);
+  cv::putText(img, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
+}
+
+std::string fixed(const char* format, double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, format, value);
+  return buf;
+}
+
+}  // namespace
+
+cv::Mat renderAnnotatedFrame(const core::Frame& f, const AnnotationOptions& o) {
+  cv::Mat img = baseImage(f);
+  const cv::Rect whole(0, 0, img.cols, img.rows);
+
+  // Which track owns each detection, for the mask colours.
+  std::vector<int> trackOf(f.detections.size(), 0);
+  for (const auto& t : f.tracks)
+    if (t.detection >= 0 && t.detection < static_cast<int>(trackOf.size()))
+      trackOf[static_cast<size_t>(t.detection)] = t.id;
+
+  if (o.mask_alpha > 0)
+    for (const auto& m : f.object_masks) {
+      const cv::Rect roi = m.roi & whole;
+      if (!m.valid || m.mask.empty() || roi.empty() || roi.size() != m.mask.size()) continue;
+      const bool known = m.detection >= 0 && m.detection < static_cast<int>(trackOf.size());
+      const int id = known && trackOf[static_cast<size_t>(m.detection)] > 0
+                         ? trackOf[static_cast<size_t>(m.detection)]
+                         : 1000 + m.detection;
+      cv::Mat patch = img(roi), tinted;
+      cv::addWeighted(patch, 1.0 - o.mask_alpha, cv::Mat(patch.size(), CV_8UC3, colourForId(id)),
+                      o.mask_alpha, 0.0, tinted);
+      tinted.copyTo(patch, m.mask);
+    }
+
+  if (o.detections)
+    for (const auto& d : f.detections) {
+      cv::rectangle(img, d.box, {200, 200, 200}, 1, cv::LINE_AA);
+      label(img, d.category + fixed(" %.2f", d.score),
+            {static_cast<int>(d.box.x), static_cast<int>(d.box.y + d.box.height) + 12},
+            {200, 200, 200}, o.font_scale * 0.85);
+    }
+
+  if (o.tracks)
+    for (const auto& t : f.tracks) {
+      if (t.state == core::TrackState::Lost) continue;
+      const cv::Scalar colour = colourForId(t.id);
+      const bool coasting = t.detection < 0;
+      cv::rectangle(img, t.box, colour, coasting ? 1 : 2, cv::LINE_AA);
+      std::string text = "#" + std::to_string(t.id) + " " + t.category + fixed(" d=%.2fm", t.depth);
+      if (coasting) text += " (coasting)";
+      if (t.state == core::TrackState::Tentative) text += " ?";
+      label(img, text, {static_cast<int>(t.box.x), static_cast<int>(t.box.y) - 4}, colour,
+            o.font_scale);
+    }
+
+  char header[128];
+  std::snprintf(header, sizeof header, "frame %zu  t=%.3f s  %zu detections%s  %zu tracks", f.index,
+                f.t, f.detections.size(), f.detections_fresh ? "" : " (none fresh)",
+                f.tracks.size());
+  label(img, header, {6, 16}, {255, 255, 255}, o.font_scale);
+  return img;
+}
+
+}  // namespace dynslam::viz
