@@ -1,0 +1,62 @@
+#pragma once
+// Reading the simulator's object ground truth (dynslam-sim's objects.txt): one line per frame and
+// object at least partly in view,
+//   frame t id class moving tx ty tz qx qy qz qw box_x box_y box_w box_h visible_pixels
+//   visible_fraction
+// with t the frame's rawlog stamp (Unix seconds), the pose the object's rigid core in the world
+// and the box amodal, in pixels, clipped to the image. Blank lines and '#' comments are skipped;
+// a malformed line throws ObjectGroundTruthError "path:line: what". MRPT-free.
+#include <Eigen/Geometry>
+#include <opencv2/core/types.hpp>
+
+#include <cstddef>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dynslam::core {
+
+struct ObjectGroundTruthError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct ObjectGroundTruthRow {
+  std::size_t frame = 0;  ///< 0-based frame index in the simulated sequence
+  double t = 0;           ///< the frame's rawlog stamp, s
+  int id = 0;             ///< instance id (its pixels in labels/NNNNNN.png)
+  std::string category;   ///< "person" | "car"
+  bool moving = false;    ///< false: a standing person or a parked car
+  Eigen::Isometry3d T_world_object = Eigen::Isometry3d::Identity();
+  cv::Rect box;                 ///< amodal, pixels, clipped to the image
+  int visible_pixels = 0;       ///< pixels that show it
+  double visible_fraction = 0;  ///< visible pixels / pixels it would cover unoccluded
+};
+
+/// Every row of `path` in file order. Throws ObjectGroundTruthError naming the file when it
+/// cannot be read, and the file and 1-based line when a line is malformed.
+std::vector<ObjectGroundTruthRow> readObjectGroundTruth(const std::string& path);
+
+/// The rows grouped by frame, found by frame index or by stamp (the frames a pipeline sees carry
+/// the rawlog stamp, which went through MRPT's 100 ns clock: hence the tolerance).
+class ObjectGroundTruthIndex {
+ public:
+  ObjectGroundTruthIndex() = default;
+  explicit ObjectGroundTruthIndex(std::vector<ObjectGroundTruthRow> rows);
+
+  /// The objects of frame `frame`; empty when the file lists none (nothing in view).
+  const std::vector<ObjectGroundTruthRow>& byFrame(std::size_t frame) const;
+
+  /// The objects of the frame whose stamp is nearest `t` within `tolerance` seconds; empty when
+  /// no listed frame is that close (a frame with nothing in view has no lines at all).
+  const std::vector<ObjectGroundTruthRow>& atTime(double t, double tolerance = 1e-3) const;
+
+  std::size_t frameCount() const { return by_frame_.size(); }  ///< frames with any object
+
+ private:
+  std::map<std::size_t, std::vector<ObjectGroundTruthRow>> by_frame_;
+  std::map<double, std::size_t> frame_by_time_;
+  static const std::vector<ObjectGroundTruthRow> kNone;
+};
+
+}  // namespace dynslam::core
