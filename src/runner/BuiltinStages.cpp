@@ -1,6 +1,8 @@
 #include "BuiltinStages.h"
 
 #include <dynslam/core/StageRegistry.h>
+#include <dynslam/detection/RegisterStages.h>
+#include <dynslam/segmentation/RegisterStages.h>
 #include <dynslam/odometry/RegisterStages.h>
 
 namespace dynslam::runner {
@@ -9,6 +11,8 @@ void registerBuiltinStages(core::StageRegistry& registry) {
   // Each module adds its line here as its stages land (detection, segmentation, tracking,
   // frontend, estimator).
   odometry::registerStages(registry);
+  detection::registerStages(registry);
+  segmentation::registerStages(registry);
 }
 
 }  // namespace dynslam::runner

@@ -1,0 +1,151 @@
+// Detector latency on real pedestrian video (issue 4: YOLOX-nano latency at input 416 and 320,
+// HOG for comparison) and the rate the real-time detector thread sustains while the rest of the
+// pipeline keeps a core busy. Frames: vtest.avi (opencv-doc) resized to 640x480, the system's
+// image size, sampled evenly.
+//
+//   build/bin/bench-detection [--frames 50] [--model ../shared/models/yolox_nano.onnx]
+//                             [--video /usr/share/doc/opencv-doc/examples/data/vtest.avi]
+//                             [--realtime-seconds 4]
+#include <dynslam/core/CommandLine.h>
+#include <dynslam/detection/HogPeopleDetector.h>
+#include <dynslam/detection/OnnxYoloDetector.h>
+#include <dynslam/detection/RealtimeDetector.h>
+
+#include <opencv2/core/utility.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace dynslam;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::vector<core::Frame> sampleFrames(const std::string& video_path, int count) {
+  cv::VideoCapture video(video_path);
+  if (!video.isOpened()) throw std::runtime_error("cannot open the video '" + video_path + "'");
+  const int total = static_cast<int>(video.get(cv::CAP_PROP_FRAME_COUNT));
+  std::vector<core::Frame> frames;
+  for (int i = 0; i < count; ++i) {
+    video.set(cv::CAP_PROP_POS_FRAMES, static_cast<double>(i) * total / count);
+    cv::Mat image;
+    if (!video.read(image)) break;
+    core::Frame frame;
+    frame.index = static_cast<std::size_t>(i);
+    frame.t = i / 30.0;
+    cv::resize(image, frame.rgb, cv::Size(640, 480), 0, 0, cv::INTER_AREA);
+    frames.push_back(frame);
+  }
+  if (frames.empty()) throw std::runtime_error("no frame decoded from '" + video_path + "'");
+  return frames;
+}
+
+/// Median and 90th percentile latency and mean detections per frame of one detector.
+void benchLatency(const char* name, detection::Detector& detector,
+                  const std::vector<core::Frame>& frames) {
+  for (int i = 0; i < 3; ++i) detector.detect(frames[static_cast<std::size_t>(i) % frames.size()]);
+  std::vector<double> ms;
+  std::size_t people = 0, all = 0;
+  for (const auto& frame : frames) {
+    const auto start = Clock::now();
+    const auto found = detector.detect(frame);
+    ms.push_back(msSince(start));
+    all += found.size();
+    for (const auto& d : found) people += d.category == "person";
+  }
+  std::sort(ms.begin(), ms.end());
+  const double n = static_cast<double>(frames.size());
+  std::printf("%-34s %8.1f %8.1f %9.1f %9.2f %9.2f\n", name, ms[ms.size() / 2],
+              ms[ms.size() * 9 / 10], 1000.0 / ms[ms.size() / 2], people / n, all / n);
+}
+
+/// Frames handed to a RealtimeDetector at 30 Hz while this thread spins busy for `rest_ms` of
+/// each frame period, as the rest of a pipeline would (33 ms: a core fully loaded); returns the
+/// detector's results per second.
+double realtimeRate(std::unique_ptr<detection::Detector> detector,
+                    const std::vector<core::Frame>& frames, double seconds, double rest_ms) {
+  detection::RealtimeDetector realtime(std::move(detector));
+  const auto start = Clock::now();
+  std::size_t delivered = 0, i = 0;
+  volatile double sink = 0;
+  while (msSince(start) < 1000.0 * seconds) {
+    const auto frame_start = Clock::now();
+    core::Frame frame = frames[i++ % frames.size()];
+    if (realtime.poll()) ++delivered;
+    realtime.submit(frame);
+    while (msSince(frame_start) < rest_ms) sink = sink + 1.0;  // "the rest of the pipeline"
+    const double idle_ms = 1000.0 / 30.0 - msSince(frame_start);
+    if (idle_ms > 0)
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(idle_ms));
+  }
+  return delivered / (msSince(start) / 1000.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return core::runProgram("bench-detection", [&] {
+    core::CommandLine cl({"--frames", "--model", "--video", "--realtime-seconds"}, {});
+    cl.parse(argc, argv);
+    if (cl.helpRequested()) {
+      std::puts(
+          "bench-detection [--frames 50] [--model ../shared/models/yolox_nano.onnx] "
+          "[--video .../vtest.avi] [--realtime-seconds 4]");
+      return 0;
+    }
+    const int count = static_cast<int>(cl.optionalInteger("--frames").value_or(50));
+    const std::string model = cl.valueOr("--model", "../shared/models/yolox_nano.onnx");
+    const double rt_seconds = cl.optionalDouble("--realtime-seconds").value_or(4.0);
+    const auto frames = sampleFrames(
+        cl.valueOr("--video", "/usr/share/doc/opencv-doc/examples/data/vtest.avi"), count);
+    std::printf("%zu vtest.avi frames at 640x480; OpenCV %s, %d threads by default\n\n",
+                frames.size(), CV_VERSION, cv::getNumThreads());
+    std::printf("%-34s %8s %8s %9s %9s %9s\n", "detector", "median", "p90", "Hz", "people", "all");
+    std::printf("%-34s %8s %8s %9s %9s %9s\n", "", "ms", "ms", "(median)", "/frame", "/frame");
+
+    const auto yolo = [&](int input, int threads) {
+      detection::OnnxYoloDetectorSettings s;
+      s.model = model;
+      s.input_size = input;
+      s.threads = threads;
+      return std::make_unique<detection::OnnxYoloDetector>(s, detection::ClassMap());
+    };
+    benchLatency("yolox_nano input 416", *yolo(416, 0), frames);
+    benchLatency("yolox_nano input 320", *yolo(320, 0), frames);
+    detection::HogPeopleDetector hog({}, detection::ClassMap());
+    benchLatency("hog people (min_height 128)", hog, frames);
+    const int default_threads = cv::getNumThreads();
+    benchLatency("yolox_nano input 416, 1 thread", *yolo(416, 1), frames);
+    benchLatency("yolox_nano input 320, 1 thread", *yolo(320, 1), frames);
+    cv::setNumThreads(default_threads);
+
+    std::printf(
+        "\nreal-time mode: detections/s the detector thread delivers while the pipeline thread "
+        "feeds 30 Hz frames and works `rest` ms of each 33 ms period (%.0f s each; target >= 15)\n",
+        rt_seconds);
+    std::printf("%-34s %12s %12s\n", "detector", "rest 10 ms", "rest 33 ms");
+    for (const int input : {416, 320})
+      for (const int threads : {0, 1}) {
+        double hz[2];
+        for (int k = 0; k < 2; ++k) {
+          hz[k] = realtimeRate(yolo(input, threads), frames, rt_seconds, k == 0 ? 10.0 : 34.0);
+          cv::setNumThreads(default_threads);
+        }
+        char name[64];
+        std::snprintf(name, sizeof name, "yolox_nano input %d, %d thread%s", input,
+                      threads ? threads : default_threads, threads == 1 ? "" : "s");
+        std::printf("%-34s %12.1f %12.1f\n", name, hz[0], hz[1]);
+      }
+    return 0;
+  });
+}

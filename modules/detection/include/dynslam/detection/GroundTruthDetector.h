@@ -1,0 +1,46 @@
+#pragma once
+// Boxes from the simulator's ground truth (dynslam-sim's objects.txt), degraded on purpose to
+// behave like a real detector: objects too hidden to be seen are not reported, some visible ones
+// are missed, box edges jitter, and boxes appear where nothing is. Frames are matched to the file
+// by stamp (its t column is the rawlog stamp); the noise of a frame depends on the seed and the
+// frame's index alone, so runs repeat and do not depend on which frames were detected before.
+#include <dynslam/core/ObjectGroundTruth.h>
+#include <dynslam/detection/ClassMap.h>
+#include <dynslam/detection/Detector.h>
+
+#include <cstdint>
+#include <string>
+
+namespace dynslam::detection {
+
+struct GroundTruthDetectorSettings {
+  std::string objects;               ///< path of dynslam-sim's objects.txt
+  double miss_rate = 0.0;            ///< probability that a reportable object is not reported
+  double jitter_px = 0.0;            ///< sigma of the Gaussian noise on each box edge, pixels
+  double false_positive_rate = 0.0;  ///< mean number of boxes on nothing per frame (Poisson)
+  /// Objects with less of themselves visible are not reported, as a real detector misses them
+  /// (an object with no visible pixel is never reported, whatever this says).
+  double min_visible_fraction = 0.2;
+  std::uint32_t seed = 1;
+  /// s; how far a frame's stamp may be from the file's (MRPT stores stamps in 100 ns ticks).
+  double time_tolerance = 1e-3;
+};
+
+class GroundTruthDetector : public Detector {
+ public:
+  /// Reads the objects file (core::ObjectGroundTruthError naming it when it cannot be read);
+  /// throws DetectorError when a class in it is not a COCO class name the class map can look up.
+  GroundTruthDetector(GroundTruthDetectorSettings settings, ClassMap class_map);
+
+  /// Throws DetectorError when the frame's stamp is more than a second outside the file's time
+  /// span: the file belongs to another sequence.
+  std::vector<core::Detection> detect(const core::Frame& frame) override;
+
+ private:
+  GroundTruthDetectorSettings settings_;
+  ClassMap class_map_;
+  core::ObjectGroundTruthIndex index_;
+  double first_t_ = 0, last_t_ = 0;
+};
+
+}  // namespace dynslam::detection

@@ -1,0 +1,45 @@
+#pragma once
+// A YOLO-family detector (YOLOX, YOLOv5 or YOLOv8 output layout) run by OpenCV DNN on the CPU:
+// letterbox, forward, decode (YoloOutput.h), class map, per-category NMS. Input conventions
+// follow the layout: yolox takes BGR 0-255 (as Megvii exports it), yolov5 / yolov8 take RGB
+// scaled to 0-1 (as Ultralytics exports them); all are letterboxed top-left with grey 114.
+#include <dynslam/detection/ClassMap.h>
+#include <dynslam/detection/Detector.h>
+#include <dynslam/detection/YoloOutput.h>
+
+#include <opencv2/dnn.hpp>
+
+#include <string>
+
+namespace dynslam::detection {
+
+struct OnnxYoloDetectorSettings {
+  std::string model = "../shared/models/yolox_nano.onnx";  ///< ONNX file
+  YoloLayout layout = YoloLayout::YoloX;
+  int input_size = 416;      ///< square network input, pixels (a multiple of 32)
+  double confidence = 0.35;  ///< minimum score (objectness x class score, or class score)
+  double nms_iou = 0.45;     ///< boxes of one category overlapping more than this are merged
+  /// OpenCV threads (cv::setNumThreads, which is process-wide); 0 leaves OpenCV's default.
+  int threads = 0;
+};
+
+class OnnxYoloDetector : public Detector {
+ public:
+  /// Loads the model; throws DetectorError naming the path when it is missing or unreadable,
+  /// or when the settings are out of range.
+  OnnxYoloDetector(OnnxYoloDetectorSettings settings, ClassMap class_map);
+
+  /// Throws DetectorError for a frame without colour, or when the network's output does not fit
+  /// the layout (naming the model, the layout and the shape).
+  std::vector<core::Detection> detect(const core::Frame& frame) override;
+
+  /// The detections of one BGR image (what detect() runs on the frame's colour image).
+  std::vector<core::Detection> detectImage(const cv::Mat& bgr);
+
+ private:
+  OnnxYoloDetectorSettings settings_;
+  ClassMap class_map_;
+  cv::dnn::Net net_;
+};
+
+}  // namespace dynslam::detection

@@ -1,0 +1,70 @@
+#pragma once
+// Depth-threshold instance segmentation of detector boxes (method.md section 1, paper 4.1):
+// the object's depth d_t and an occluder's depth d_o from 2-means over an even grid of depth
+// samples in the box's central half, the background depth d_b from the upper half of the box,
+// thresholds T_min / T_max between them, and the mask = pixels of the box with depth in
+// [T_min, T_max]. Overlapping boxes are segmented each with their own thresholds; a pixel
+// both claim goes to the nearer object (mutual occlusion). MRPT-free; the stage wraps it.
+#include <dynslam/core/Perception.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <vector>
+
+namespace dynslam::segmentation {
+
+/// Which 2-means cluster of the candidate box's depths is the object (step 3).
+enum class ObjectCluster {
+  Far,    ///< method.md: the far cluster (the near one is an occluder)
+  Larger  ///< the cluster with more samples (the far one on a tie); NOT the method: a variant
+          ///< that bench-segmentation compares, for boxes whose centre shows background
+};
+
+/// The method's parameters (defaults: method.md section 1). Read from the ini by
+/// SegmentationOptions, which documents each key.
+struct DepthThresholdParams {
+  int m = 64;                        ///< depth samples on the grid over the candidate box M
+  int n = 64;                        ///< depth samples on the grid over the upper half of the box
+  double e_person = 0.5;             ///< m; depth margin e for category "person"
+  double e_car = 3.0;                ///< m; depth margin e for category "car"
+  double e_other_nonrigid = 0.5;     ///< m; e for any other category with a non-rigid model
+  double e_other_rigid = 3.0;        ///< m; e for any other category with a rigid model
+  double min_valid_fraction = 0.25;  ///< of the m samples that must have depth, else not valid
+  ObjectCluster object_cluster = ObjectCluster::Far;
+
+  /// Throws std::invalid_argument naming the first field out of range.
+  void validate() const;
+};
+
+class DepthThresholdSegmenter {
+ public:
+  explicit DepthThresholdSegmenter(DepthThresholdParams params = {});
+
+  const DepthThresholdParams& params() const { return params_; }
+
+  /// The margin e used for a detection: by category, else by its motion model.
+  double marginFor(const core::Detection& detection) const;
+
+  /// Steps 1-8 for one box, without mutual occlusion. `depth`: CV_32FC1 metres, 0 = invalid
+  /// (std::invalid_argument otherwise). The box is rounded to whole pixels and clipped to the
+  /// image first (ObjectMask::roi); an empty roi or too few valid depths in the candidate box
+  /// give valid = false with an empty mask.
+  core::ObjectMask segmentOne(const cv::Mat& depth, const core::Detection& detection,
+                              int detectionIndex) const;
+
+  /// One ObjectMask per detection, same order, mutual occlusion resolved.
+  std::vector<core::ObjectMask> segment(const cv::Mat& depth,
+                                        const std::vector<core::Detection>& detections) const;
+
+ private:
+  DepthThresholdParams params_;
+};
+
+/// Step 9: where valid masks overlap, a pixel set in several of them stays only in the one
+/// with the smallest d_t (the nearer object; equal d_t: the earlier mask).
+void resolveMutualOcclusion(std::vector<core::ObjectMask>& masks);
+
+/// The detection box in whole pixels (edges rounded), clipped to an image of `size`.
+cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size);
+
+}  // namespace dynslam::segmentation

@@ -1,0 +1,130 @@
+#include "dynslam/segmentation/DepthThresholdSegmenter.h"
+
+#include "dynslam/segmentation/DepthSampling.h"
+#include "dynslam/segmentation/TwoMeans.h"
+
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace dynslam::segmentation {
+
+void DepthThresholdParams::validate() const {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
+  if (m < 2) fail("m = " + std::to_string(m) + ": 2-means needs at least 2 samples");
+  if (n < 1) fail("n = " + std::to_string(n) + ": must be at least 1");
+  const std::pair<const char*, double> margins[] = {{"e_person", e_person},
+                                                    {"e_car", e_car},
+                                                    {"e_other_nonrigid", e_other_nonrigid},
+                                                    {"e_other_rigid", e_other_rigid}};
+  for (const auto& [name, e] : margins)
+    if (!(e > 0)) fail(std::string(name) + " = " + std::to_string(e) + ": must be > 0 (metres)");
+  if (!(min_valid_fraction > 0 && min_valid_fraction <= 1))
+    fail("min_valid_fraction = " + std::to_string(min_valid_fraction) + ": must be in (0, 1]");
+}
+
+DepthThresholdSegmenter::DepthThresholdSegmenter(DepthThresholdParams params)
+    : params_(std::move(params)) {
+  params_.validate();
+}
+
+double DepthThresholdSegmenter::marginFor(const core::Detection& detection) const {
+  if (detection.category == "person") return params_.e_person;
+  if (detection.category == "car") return params_.e_car;
+  return detection.model == core::MotionModel::Rigid ? params_.e_other_rigid
+                                                     : params_.e_other_nonrigid;
+}
+
+cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size) {
+  const auto edge = [](double v) { return static_cast<int>(std::lround(v)); };
+  const int x0 = std::max(0, edge(box.x)), y0 = std::max(0, edge(box.y));
+  const int x1 = std::min(size.width, edge(double(box.x) + box.width));
+  const int y1 = std::min(size.height, edge(double(box.y) + box.height));
+  if (x1 <= x0 || y1 <= y0) return {};
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
+                                                     const core::Detection& detection,
+                                                     int detectionIndex) const {
+  if (depth.type() != CV_32FC1)
+    throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
+  core::ObjectMask out;
+  out.detection = detectionIndex;
+  out.roi = pixelRoi(detection.box, depth.size());
+  if (out.roi.empty()) return out;
+  const cv::Rect2d box(out.roi);
+
+  // Steps 1-3: the candidate box M (same centre, half the size), m grid samples, 2-means.
+  const cv::Rect2d candidate(box.x + box.width / 4, box.y + box.height / 4, box.width / 2,
+                             box.height / 2);
+  std::vector<float> samples;
+  samples.reserve(params_.m);
+  const int gridPoints = sampleGrid(depth, candidate, params_.m, samples);
+  const int needed =
+      std::max(1, static_cast<int>(std::ceil(params_.min_valid_fraction * gridPoints)));
+  if (static_cast<int>(samples.size()) < needed) return out;
+  const TwoMeansResult clusters = twoMeans(samples);
+  const double e = marginFor(detection);
+  const bool nearIsObject =
+      params_.object_cluster == ObjectCluster::Larger && clusters.near_count > clusters.far_count;
+  out.d_t = nearIsObject ? clusters.near_mean : clusters.far_mean;
+
+  // Step 4: a near cluster more than e in front is an occluder; otherwise there is none
+  // (d_o = 0, also when every sample had the same depth and 2-means found one cluster).
+  const bool occluded = !nearIsObject && clusters.two_clusters && out.d_t - clusters.near_mean > e;
+  out.d_o = occluded ? clusters.near_mean : 0.0;
+  out.t_min = occluded ? (out.d_t + out.d_o) / 2 : out.d_t - e;
+
+  // Steps 5-6: background from the upper half of B (the lower half shows the floor). With no
+  // valid sample there d_b = 0, which takes the "no background behind" branch: d_t + e.
+  std::vector<float> background;
+  background.reserve(params_.n);
+  sampleGrid(depth, cv::Rect2d(box.x, box.y, box.width, box.height / 2), params_.n, background);
+  out.d_b = threeSigmaMean(background);
+  out.t_max = out.d_b - out.d_t > e ? (out.d_t + out.d_b) / 2 : out.d_t + e;
+
+  // Step 8. The lower bound stays above 0 so that missing depth (0) never joins the mask when
+  // d_t - e <= 0 (a car nearer than 3 m).
+  const double lower = std::max(out.t_min, double(std::numeric_limits<float>::min()));
+  cv::inRange(depth(out.roi), lower, out.t_max, out.mask);
+  out.valid = true;
+  return out;
+}
+
+std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
+    const cv::Mat& depth, const std::vector<core::Detection>& detections) const {
+  std::vector<core::ObjectMask> masks;
+  masks.reserve(detections.size());
+  for (size_t i = 0; i < detections.size(); ++i)
+    masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
+  resolveMutualOcclusion(masks);
+  return masks;
+}
+
+void resolveMutualOcclusion(std::vector<core::ObjectMask>& masks) {
+  std::vector<size_t> order;
+  for (size_t i = 0; i < masks.size(); ++i)
+    if (masks[i].valid && !masks[i].mask.empty()) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return masks[a].d_t < masks[b].d_t; });
+  // Nearest first: each mask gives up the pixels that a nearer mask already holds. A pixel in
+  // the range of several objects thus ends in the nearest one; a pixel in one range only
+  // stays where it is.
+  for (size_t k = 1; k < order.size(); ++k) {
+    auto& far = masks[order[k]];
+    for (size_t j = 0; j < k; ++j) {
+      const auto& near = masks[order[j]];
+      const cv::Rect overlap = far.roi & near.roi;
+      if (overlap.empty()) continue;
+      far.mask(overlap - far.roi.tl()).setTo(0, near.mask(overlap - near.roi.tl()));
+    }
+  }
+}
+
+}  // namespace dynslam::segmentation

@@ -1,0 +1,13 @@
+#include "dynslam/segmentation/RegisterStages.h"
+
+#include "dynslam/segmentation/SegmentationStage.h"
+
+#include <dynslam/core/StageRegistry.h>
+
+namespace dynslam::segmentation {
+
+void registerStages(core::StageRegistry& registry) {
+  registry.add<SegmentationStage>("Segmentation");
+}
+
+}  // namespace dynslam::segmentation

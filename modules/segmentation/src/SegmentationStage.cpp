@@ -1,0 +1,76 @@
+#include "dynslam/segmentation/SegmentationStage.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <stdexcept>
+
+namespace dynslam::segmentation {
+
+void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                             const std::string& s) {
+  auto& p = params;
+  p.m = c.read_int(s, "m", p.m);
+  p.n = c.read_int(s, "n", p.n);
+  p.e_person = c.read_double(s, "e_person", p.e_person);
+  p.e_car = c.read_double(s, "e_car", p.e_car);
+  p.e_other_nonrigid = c.read_double(s, "e_other_nonrigid", p.e_other_nonrigid);
+  p.e_other_rigid = c.read_double(s, "e_other_rigid", p.e_other_rigid);
+  p.min_valid_fraction = c.read_double(s, "min_valid_fraction", p.min_valid_fraction);
+  const std::string cluster =
+      c.read_string(s, "object_cluster", p.object_cluster == ObjectCluster::Far ? "far" : "larger");
+  if (cluster == "far")
+    p.object_cluster = ObjectCluster::Far;
+  else if (cluster == "larger")
+    p.object_cluster = ObjectCluster::Larger;
+  else
+    throw std::invalid_argument("object_cluster = '" + cluster +
+                                "': expected far (the method) or larger");
+}
+
+void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                           const std::string& s) const {
+  const auto write = [&](const char* key, auto value, const char* comment) {
+    c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
+            mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
+  };
+  const auto& p = params;
+  write("m", p.m, "depth samples on an even grid over the candidate box (central half of the box)");
+  write("n", p.n, "depth samples on an even grid over the upper half of the box (background)");
+  write("e_person", p.e_person, "m; depth margin e of people (method: 0.5)");
+  write("e_car", p.e_car, "m; depth margin e of cars (method: 3.0)");
+  write("e_other_nonrigid", p.e_other_nonrigid, "m; e of other classes mapped to non-rigid");
+  write("e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
+  write("min_valid_fraction", p.min_valid_fraction,
+        "of the m samples with depth, else the mask is not valid (empty)");
+  write("object_cluster", std::string(p.object_cluster == ObjectCluster::Far ? "far" : "larger"),
+        "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
+        "samples (a variant, not the method)");
+}
+
+void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
+  try {
+    core::loadOptionsStrict(options_, cfg, section);
+    segmenter_ = DepthThresholdSegmenter(options_.params);
+  } catch (const std::invalid_argument& e) {
+    throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
+  }
+}
+
+void SegmentationStage::process(core::Frame& frame) {
+  if (frame.depth.empty() && !frame.detections.empty())
+    throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
+                             " has detections but no depth image");
+  frame.object_masks = segmenter_.segment(frame.depth, frame.detections);
+  ++frames_;
+  for (const auto& m : frame.object_masks) {
+    ++masks_;
+    invalid_ += !m.valid;
+  }
+}
+
+void SegmentationStage::finish() {
+  MRPT_LOG_INFO_STREAM(frames_ << " frames, " << masks_ << " masks, " << invalid_
+                               << " without enough depth");
+}
+
+}  // namespace dynslam::segmentation

@@ -1,0 +1,79 @@
+#include <dynslam/core/Config.h>
+#include <dynslam/core/StageRegistry.h>
+#include <dynslam/segmentation/RegisterStages.h>
+#include <dynslam/segmentation/SegmentationStage.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+using namespace dynslam;
+
+TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
+  core::StageRegistry registry;
+  segmentation::registerStages(registry);
+  auto stage = registry.create("Segmentation");
+  stage->configure(core::IniConfig::fromText("[Segmentation]\nm = 36\nn = 25\ne_person = 0.4\n"
+                                             "e_car = 2.5\ne_other_rigid = 2\n"
+                                             "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"),
+                   "Segmentation");
+  const auto& p = dynamic_cast<segmentation::SegmentationStage&>(*stage).options().params;
+  EXPECT_EQ(p.m, 36);
+  EXPECT_EQ(p.n, 25);
+  EXPECT_EQ(p.e_person, 0.4);
+  EXPECT_EQ(p.e_car, 2.5);
+  EXPECT_EQ(p.e_other_rigid, 2.0);
+  EXPECT_EQ(p.e_other_nonrigid, 0.3);
+  EXPECT_EQ(p.min_valid_fraction, 0.5);
+}
+
+TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) {
+  segmentation::SegmentationStage stage;
+  stage.configure(core::IniConfig::fromText(""), "Segmentation");
+  EXPECT_EQ(stage.options().params.m, 64);
+  EXPECT_EQ(stage.options().params.n, 64);
+  EXPECT_EQ(stage.options().params.e_person, 0.5);
+  EXPECT_EQ(stage.options().params.e_car, 3.0);
+  EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Far);
+  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\ne_pedestrian = 1\n"), "S"),
+               core::ConfigError);
+  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = near\n"), "S"),
+               core::ConfigError)
+      << "names the section and the file";
+  stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = larger\n"), "S");
+  EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Larger);
+  try {
+    stage.configure(core::IniConfig::fromText("[S]\nm = 1\n", "x.ini"), "S");
+    FAIL() << "m = 1 accepted";
+  } catch (const core::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("m = 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("x.ini"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SegmentationStage, WritesOneMaskPerDetectionInOrder) {
+  segmentation::SegmentationStage stage;
+  stage.configure(core::IniConfig::fromText(""), "Segmentation");
+  core::Frame frame;
+  frame.depth = cv::Mat(120, 160, CV_32FC1, cv::Scalar(5.0f));
+  frame.depth(cv::Rect(20, 30, 30, 90)).setTo(2.0f);
+  frame.depth(cv::Rect(100, 30, 30, 90)).setTo(3.0f);
+  frame.detections.resize(3);
+  frame.detections[0].box = cv::Rect2f(100, 20, 30, 100);
+  frame.detections[1].box = cv::Rect2f(20, 20, 30, 100);
+  frame.detections[2].box = cv::Rect2f(140, 0, 20, 20);
+  for (auto& d : frame.detections) d.category = "person";
+  frame.depth(cv::Rect(140, 0, 20, 20)).setTo(0);
+  stage.process(frame);
+  ASSERT_EQ(frame.object_masks.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(frame.object_masks[i].detection, i);
+  EXPECT_DOUBLE_EQ(frame.object_masks[0].d_t, 3.0);
+  EXPECT_DOUBLE_EQ(frame.object_masks[1].d_t, 2.0);
+  EXPECT_FALSE(frame.object_masks[2].valid) << "no depth in its box";
+
+  core::Frame noDepth;
+  noDepth.detections.resize(1);
+  EXPECT_THROW(stage.process(noDepth), std::runtime_error);
+  noDepth.detections.clear();
+  stage.process(noDepth);
+  EXPECT_TRUE(noDepth.object_masks.empty());
+}
