@@ -2,8 +2,9 @@
 
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/detection/RegisterStages.h>
-#include <dynslam/segmentation/RegisterStages.h>
 #include <dynslam/odometry/RegisterStages.h>
+#include <dynslam/segmentation/RegisterStages.h>
+#include <dynslam/tracking/RegisterStages.h>
 
 namespace dynslam::runner {
 
@@ -13,6 +14,7 @@ void registerBuiltinStages(core::StageRegistry& registry) {
   odometry::registerStages(registry);
   detection::registerStages(registry);
   segmentation::registerStages(registry);
+  tracking::registerStages(registry);
 }
 
 }  // namespace dynslam::runner

@@ -1,0 +1,229 @@
+// Tracking quality and speed (issue 4): the Kalman depth-IoU tracker on the simulator's
+// indoor_people_high scenario, scored with CLEAR-MOT and IDF1; optionally the same tracker on a
+// real video through YOLOX-nano (tracking_video.cpp).
+//
+//   build/bin/bench-tracking [--config params/sim/indoor_people_high.ini] [--frames N]
+//       [--miss-rate 0.1] [--jitter 3] [--min-visible 0.2] [--seed 1]
+//       [--depth segmentation|truth|box] [--report-coasting 1]
+//       [--sweep Tracking.rho_min=0.3,0.5,0.6,0.7,0.8]  ('' for none)
+//       [--set Section.key=value]...   (Tracking.* goes to the tracker, the rest to the scenario)
+//       [--video vtest.avi --model yolox_nano.onnx --strip strip.png [--video-frames N]]
+//
+// The simulated run: the scenario rendered in-process twice (the first pass writes the
+// ground truth to objects.txt in a temporary folder, which GroundTruthDetector reads as it would
+// read dynslam-sim's; the second renders the images again for the segmentation), detections from
+// GroundTruthDetector, object depth from DepthThresholdSegmenter (or the true depth: the median
+// depth of the person's visible pixels; or the tracker's box-median fallback), then the tracker
+// on the cached observations, once with the ini's settings and once per value of the sweep. Scoring
+// rules (MotMetrics.h for the metrics):
+// - truth: every object in view; "counted" when at least --min-visible of it is visible (what
+//   the detector reports), else "don't care" (a hidden person cannot be demanded);
+// - hypotheses: confirmed tracks matched this frame or coasting for at most --report-coasting
+//   detector frames (DeepSORT reports tracks missed for at most 1), boxes clipped to the image
+//   as the truth's are.
+#include "tracking_sim_input.h"
+#include "tracking_video.h"
+
+#include <dynslam/core/CommandLine.h>
+#include <dynslam/core/Config.h>
+#include <dynslam/evaluation/MotMetrics.h>
+#include <dynslam/tracking/KalmanBoxTracker.h>
+#include <dynslam/tracking/TrackingStage.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+using namespace dynslam;
+using bench::BenchSettings;
+using bench::CachedRun;
+
+struct TrackerRun {
+  evaluation::MotResult mot;
+  std::vector<double> ms;  // tracker time per frame
+  int tracks_started = 0;
+  double objects_per_frame = 0;
+};
+
+TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerParams& params,
+                      int reportCoasting) {
+  tracking::KalmanBoxTracker tracker(params);
+  TrackerRun r;
+  std::vector<evaluation::MotFrame> mot;
+  size_t observations = 0;
+  const cv::Rect2d image(0, 0, run.image.width, run.image.height);
+  for (const auto& f : run.frames) {
+    const auto t0 = std::chrono::steady_clock::now();
+    tracker.predict(f.t);
+    tracker.update(f.observations, run.image);
+    const std::vector<core::Track> tracks = tracker.tracks();
+    r.ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    observations += f.observations.size();
+    evaluation::MotFrame m;
+    m.truth = f.truth;
+    for (const auto& t : tracks)
+      if (t.state == core::TrackState::Confirmed && t.misses <= reportCoasting) {
+        const cv::Rect2d box = cv::Rect2d(t.box.x, t.box.y, t.box.width, t.box.height) & image;
+        if (!box.empty()) m.hypotheses.push_back({t.id, box});
+      }
+    mot.push_back(std::move(m));
+  }
+  r.mot = evaluation::evaluateMot(mot);
+  r.tracks_started = tracker.tracksStarted();
+  r.objects_per_frame = run.frames.empty() ? 0 : double(observations) / run.frames.size();
+  return r;
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, size_t(p * v.size()))];
+}
+
+tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& overrides) {
+  std::string text = "[Tracking]\n";
+  auto ini = core::IniConfig::fromText(text, "bench-tracking --set");
+  for (const auto& o : overrides) ini.applyOverride(o);
+  tracking::TrackingStage stage;  // validates the keys and values as the pipeline would
+  stage.configure(ini, "Tracking");
+  return stage.options().tracker;
+}
+
+void benchSimulation(const BenchSettings& s) {
+  const tracking::KalmanBoxTrackerParams params = trackerParams(s.tracker_overrides);
+  const auto start = std::chrono::steady_clock::now();
+  const CachedRun run = prepareSimulatedRun(s);
+  const double prepSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const TrackerRun main = runTracker(run, params, s.report_coasting);
+  const auto& m = main.mot;
+
+  std::printf("scenario        %s, %zu frames %dx%d, %zu people\n", s.config.c_str(),
+              run.frames.size(), run.image.width, run.image.height, run.people);
+  std::printf(
+      "detections      GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported "
+      "when >= %.2f visible; depth: %s (median error %.1f %%)\n",
+      s.miss_rate, s.jitter, s.min_visible, s.depth.c_str(),
+      100 * percentile(run.depthErrors, 0.5));
+  // Gaps: stretches of frames in which a truth id seen before and after is not counted
+  // (hidden behind someone, or out of view): each one the tracker has to bridge.
+  std::map<int, int> lastSeen;
+  std::vector<double> gaps;
+  size_t outOfView = 0;
+  for (size_t i = 0; i < run.frames.size(); ++i)
+    for (const auto& t : run.frames[i].truth) {
+      if (!t.counted) continue;
+      const auto it = lastSeen.find(t.id);
+      if (it != lastSeen.end() && int(i) - it->second > 1) {
+        gaps.push_back(int(i) - it->second - 1);
+        // Out of view when it left the image entirely at some frame of the gap.
+        bool left = false;
+        for (int k = it->second + 1; k < int(i) && !left; ++k) {
+          const auto& truth = run.frames[k].truth;
+          left =
+              std::none_of(truth.begin(), truth.end(), [&](const auto& o) { return o.id == t.id; });
+        }
+        outOfView += left;
+      }
+      lastSeen[t.id] = int(i);
+    }
+  std::printf(
+      "truth gaps      %zu stretches in which a person is not counted between two counted "
+      "frames (%zu of them out of view): median %.0f frames, p90 %.0f, max %.0f\n",
+      gaps.size(), outOfView, percentile(gaps, 0.5), percentile(gaps, 0.9), percentile(gaps, 1.0));
+  const double below = double(std::count_if(run.selfRho.begin(), run.selfRho.end(),
+                                            [&](double r) { return r <= params.rho_min; }));
+  std::printf(
+      "truth motion    depth IoU of a visible object's true box with its own box one "
+      "frame before: median %.3f, p10 %.3f, p1 %.3f; %.1f %% <= rho_min\n",
+      percentile(run.selfRho, 0.5), percentile(run.selfRho, 0.1), percentile(run.selfRho, 0.01),
+      100 * below / std::max<size_t>(1, run.selfRho.size()));
+  std::printf(
+      "tracker         rho_min %.2f (coasting tracks: %.2f), max_age %d, min_hits %d; "
+      "reported: confirmed tracks coasting <= %d frames\n",
+      params.rho_min, std::min(params.rho_min, params.rho_min_coasting), params.max_age,
+      params.min_hits, s.report_coasting);
+  std::printf("ground truth    %zu boxes counted, %zu truth ids; %zu tracks started\n",
+              m.truth_boxes, m.truth_ids, size_t(main.tracks_started));
+  std::printf("MOTA            %.3f (target >= 0.90; ratio %.2f)  [FN %zu, FP %zu, IDsw %zu]\n",
+              m.mota, m.mota / 0.90, m.misses, m.false_positives, m.id_switches);
+  std::printf("IDF1            %.3f (target >= 0.90; ratio %.2f)  [IDP %.3f, IDR %.3f]\n", m.idf1,
+              m.idf1 / 0.90, m.idp, m.idr);
+  std::printf("ID switches     %zu; fragmentations %zu; MOTP (mean IoU) %.3f\n", m.id_switches,
+              m.fragmentations, m.motp);
+  const double med = percentile(main.ms, 0.5);
+  std::printf(
+      "tracker time    median %.4f ms per frame, p90 %.4f ms, %.1f detections per frame "
+      "(target <= 0.2 ms; ratio %.3f)\n",
+      med, percentile(main.ms, 0.9), main.objects_per_frame, med / 0.2);
+  std::printf("(render, detect and segment: %.1f s)\n", prepSeconds);
+  if (s.sweep.empty()) return;
+  // "Tracking.key=v1,v2,...": one run per value, the other settings as above.
+  const size_t eq = s.sweep.find('=');
+  if (eq == std::string::npos || s.sweep.rfind("Tracking.", 0) != 0)
+    throw core::UsageError("--sweep must read Tracking.key=v1,v2,..., not '" + s.sweep + "'");
+  const std::string key = s.sweep.substr(0, eq);
+  std::printf("\nsweep of %s (everything else as above)\n", key.c_str());
+  std::printf("  %12s   MOTA   IDF1  IDsw  frag    FP    FN  tracks\n", key.c_str() + 9);
+  std::stringstream values(s.sweep.substr(eq + 1));
+  for (std::string v; std::getline(values, v, ',');) {
+    std::vector<std::string> overrides = s.tracker_overrides;
+    overrides.push_back(key + "=" + v);
+    const TrackerRun r = runTracker(run, trackerParams(overrides), s.report_coasting);
+    std::printf("  %12s  %5.3f  %5.3f  %4zu  %4zu  %4zu  %4zu  %6d\n", v.c_str(), r.mot.mota,
+                r.mot.idf1, r.mot.id_switches, r.mot.fragmentations, r.mot.false_positives,
+                r.mot.misses, r.tracks_started);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return core::runProgram("bench-tracking", [&] {
+    core::CommandLine cl(
+        {"--config", "--frames", "--miss-rate", "--jitter", "--min-visible", "--seed", "--depth",
+         "--report-coasting", "--video", "--model", "--strip", "--video-frames", "--sweep"},
+        {}, {"--set"});
+    cl.parse(argc, argv);
+    if (cl.helpRequested()) {
+      std::cout << "usage: bench-tracking [--config INI] [--frames N] [--miss-rate 0.1] "
+                   "[--jitter 3] [--min-visible 0.2] [--seed 1] [--depth segmentation|truth|box] "
+                   "[--report-coasting 1] [--sweep Tracking.key=v1,v2,...|''] [--set "
+                   "Section.key=value]... "
+                   "[--video FILE --model ONNX --strip PNG [--video-frames N]]\n";
+      return 0;
+    }
+    BenchSettings s;
+    s.config = cl.valueOr("--config", s.config);
+    s.frames = size_t(cl.optionalInteger("--frames").value_or(0));
+    s.miss_rate = cl.optionalDouble("--miss-rate").value_or(s.miss_rate);
+    s.jitter = cl.optionalDouble("--jitter").value_or(s.jitter);
+    s.min_visible = cl.optionalDouble("--min-visible").value_or(s.min_visible);
+    s.seed = uint32_t(cl.optionalInteger("--seed").value_or(s.seed));
+    s.depth = cl.valueOr("--depth", s.depth);
+    if (s.depth != "segmentation" && s.depth != "truth" && s.depth != "box")
+      throw core::UsageError("--depth must be segmentation, truth or box, not '" + s.depth + "'");
+    s.report_coasting = int(cl.optionalInteger("--report-coasting").value_or(s.report_coasting));
+    s.sweep = cl.valueOr("--sweep", s.sweep);
+    for (const auto& o : cl.all("--set"))
+      (o.rfind("Tracking.", 0) == 0 ? s.tracker_overrides : s.sim_overrides).push_back(o);
+    if (cl.has("--video")) {
+      VideoBenchSettings v;
+      v.video = cl.required("--video");
+      v.model = cl.required("--model");
+      v.strip = cl.required("--strip");
+      v.frames = size_t(cl.optionalInteger("--video-frames").value_or(0));
+      v.tracker = trackerParams(s.tracker_overrides);
+      benchVideo(v);
+      return 0;
+    }
+    benchSimulation(s);
+    return 0;
+  });
+}

@@ -1,0 +1,128 @@
+#include "tracking_sim_input.h"
+
+#include <dynslam/core/Config.h>
+#include <dynslam/detection/GroundTruthDetector.h>
+#include <dynslam/segmentation/DepthThresholdSegmenter.h>
+#include <dynslam/segmentation/MaskQuality.h>
+#include <dynslam/sim/Simulator.h>
+#include <dynslam/tracking/DepthIoU.h>
+#include <dynslam/tracking/ObjectDepth.h>
+
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+
+namespace dynslam::bench {
+namespace {
+
+/// The object's true depth as the segmentation should measure it: the median depth of its
+/// visible pixels (as bench-segmentation scores d_t), else its torso's depth.
+double trueDepth(const sim::SimFrame& f, const sim::ObjectTruth& o) {
+  const double visible = segmentation::visibleMedianDepth(f.image.depth, f.image.label, o.id);
+  if (visible > 0) return visible;
+  return (f.T_world_camera.inverse() * o.T_world_object).translation().z();
+}
+
+/// objects.txt as dynslam-sim writes it (SimulationWriter), with t in seconds from the start.
+std::string writeObjects(const sim::Simulator& simulator, size_t frames, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/objects.txt";
+  std::ofstream out(path);
+  out << std::setprecision(17);
+  sim::SimFrame f;
+  for (size_t i = 0; i < frames; ++i) {
+    simulator.renderFrame(i, f);
+    for (const auto& o : f.objects) {
+      const Eigen::Vector3d p = o.T_world_object.translation();
+      const Eigen::Quaterniond q(o.T_world_object.linear());
+      out << i << ' ' << f.t << ' ' << o.id << ' ' << o.category << ' ' << (o.moving ? 1 : 0) << ' '
+          << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z()
+          << ' ' << q.w() << ' ' << o.box.x << ' ' << o.box.y << ' ' << o.box.width << ' '
+          << o.box.height << ' ' << o.visible_pixels << ' ' << o.visible_fraction << '\n';
+    }
+  }
+  return path;
+}
+
+}  // namespace
+
+CachedRun prepareSimulatedRun(const BenchSettings& s) {
+  sim::ScenarioOptions options;
+  options.load(core::IniConfig::fromFile(s.config, s.sim_overrides));
+  const sim::Simulator simulator(options);
+  const size_t frames =
+      s.frames ? std::min(s.frames, simulator.frameCount()) : simulator.frameCount();
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / ("bench-tracking-" + std::to_string(getpid())))
+          .string();
+  detection::GroundTruthDetectorSettings gt;
+  gt.objects = writeObjects(simulator, frames, dir);
+  gt.miss_rate = s.miss_rate;
+  gt.jitter_px = s.jitter;
+  gt.min_visible_fraction = s.min_visible;
+  gt.seed = s.seed;
+  detection::GroundTruthDetector detector(gt, detection::ClassMap());
+  const segmentation::DepthThresholdSegmenter segmenter;
+
+  CachedRun run;
+  run.image = cv::Size(options.world.width, options.world.height);
+  run.people = size_t(options.people.walkers + options.people.standing);
+  sim::SimFrame sf;
+  std::map<int, std::pair<cv::Rect2f, double>> previous;  // truth id -> box, depth
+  for (size_t i = 0; i < frames; ++i) {
+    simulator.renderFrame(i, sf);
+    std::map<int, std::pair<cv::Rect2f, double>> current;
+    for (const auto& o : sf.objects) {
+      if (o.visible_pixels == 0 || o.visible_fraction < s.min_visible) continue;
+      current[o.id] = {cv::Rect2f(o.box), trueDepth(sf, o)};
+      const auto it = previous.find(o.id);
+      if (it != previous.end())
+        run.selfRho.push_back(tracking::depthIoU(it->second.first, it->second.second,
+                                                 current[o.id].first, current[o.id].second));
+    }
+    previous = std::move(current);
+    core::Frame frame;
+    frame.index = i;
+    frame.t = sf.t;
+    frame.rgb = sf.image.rgb;
+    frame.depth = sf.image.depth;
+    frame.intrinsics = simulator.camera();
+    frame.detections = detector.detect(frame);
+    if (s.depth == "segmentation") {
+      frame.object_masks = segmenter.segment(frame.depth, frame.detections);
+    } else if (s.depth == "truth") {
+      for (size_t k = 0; k < frame.detections.size(); ++k)
+        for (const auto& o : sf.objects)
+          if (o.id == frame.detections[k].truth_id) {
+            core::ObjectMask m;
+            m.detection = int(k);
+            m.valid = true;
+            m.d_t = trueDepth(sf, o);
+            frame.object_masks.push_back(m);
+          }
+    }  // "box": no masks, the tracker's fallback
+    CachedFrame c;
+    c.t = frame.t;
+    for (size_t k = 0; k < frame.detections.size(); ++k) {
+      const auto& d = frame.detections[k];
+      c.observations.push_back(
+          {d.box, tracking::measuredObjectDepth(frame, k), d.category, d.model});
+      for (const auto& o : sf.objects)
+        if (o.id == d.truth_id) {
+          const double truthDepth = trueDepth(sf, o);
+          run.depthErrors.push_back(std::abs(c.observations.back().depth - truthDepth) /
+                                    truthDepth);
+        }
+    }
+    for (const auto& o : sf.objects)
+      c.truth.push_back({int(o.id), cv::Rect2d(o.box),
+                         o.visible_pixels > 0 && o.visible_fraction >= s.min_visible});
+    run.frames.push_back(std::move(c));
+  }
+  std::filesystem::remove_all(dir);
+  return run;
+}
+
+}  // namespace dynslam::bench

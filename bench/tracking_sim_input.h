@@ -1,0 +1,48 @@
+#pragma once
+// The simulated input of bench-tracking: the scenario rendered in-process, detections from
+// GroundTruthDetector (which reads the ground truth from an objects.txt written to a temporary
+// folder, as it would read dynslam-sim's), object depth from the segmentation, the true depth or
+// the box median, and the truth boxes the tracks are scored against; cached per frame so the
+// tracker can be run many times (sweeps) on the same input.
+#include <dynslam/evaluation/MotMetrics.h>
+#include <dynslam/tracking/KalmanBoxTracker.h>
+
+#include <opencv2/core/types.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dynslam::bench {
+
+struct BenchSettings {
+  std::string config = "params/sim/indoor_people_high.ini";
+  size_t frames = 0;  // 0: all
+  double miss_rate = 0.1, jitter = 3.0, min_visible = 0.2;
+  uint32_t seed = 1;
+  std::string depth = "segmentation";
+  int report_coasting = 1;
+  std::string sweep = "Tracking.rho_min=0.3,0.5,0.6,0.7,0.8";  // "": none
+  std::vector<std::string> sim_overrides, tracker_overrides;
+};
+
+/// What the tracker sees and what it is scored against, per frame.
+struct CachedFrame {
+  double t = 0;
+  std::vector<tracking::BoxObservation> observations;
+  std::vector<evaluation::MotTruthBox> truth;
+};
+
+struct CachedRun {
+  cv::Size image;
+  std::vector<CachedFrame> frames;
+  size_t people = 0;
+  std::vector<double> depthErrors;  // |d - d_true| / d_true of the observations
+  std::vector<double> selfRho;      // depth IoU of each counted truth box with its previous one
+};
+
+/// Renders the scenario twice (ground truth, then images for detection and segmentation) and
+/// returns what the tracker sees and what it is scored against, per frame.
+CachedRun prepareSimulatedRun(const BenchSettings& s);
+
+}  // namespace dynslam::bench

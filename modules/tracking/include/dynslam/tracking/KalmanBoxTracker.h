@@ -1,0 +1,106 @@
+#pragma once
+// Multi-object tracking by one Kalman box filter per object (method.md section 2).
+//
+// Each detector frame: every track's filter predicts to the frame's time; the depth IoU rho of
+// each (predicted track, detection) pair of the same category is computed; the Hungarian
+// algorithm picks the assignment with the largest total rho, and a pair is accepted only if
+// rho > rho_min. Matched tracks update their filter. Unmatched confirmed tracks coast (predict
+// only, the box keeping its size: the area rate is held at 0 while coasting, as a linear
+// extrapolation of the area over a second of hiding shrinks or blows up the box) for up to
+// max_age detector frames, so an object hidden behind another keeps its ID and is taken up
+// again when it reappears (paper Fig. 10); then they are Lost, as they are once less than half
+// of their predicted box is inside the image. Unmatched detections start Tentative tracks,
+// Confirmed after min_hits matched frames; a Tentative track that misses a frame is dropped (a
+// false positive rarely repeats at the same place and depth). IDs count up from 1 and are never
+// reused.
+//
+// Optionally (rho_min_coasting < rho_min, not in the paper), tracks that were already coasting
+// get a second round against the detections left over, accepted above rho_min_coasting: after
+// a second of coasting the predicted box of a walker has drifted by a fraction of its width
+// (gait, turns), and the paper's 0.7 then rejects the person it hid (bench-tracking measures
+// both).
+//
+// Pairs at or below rho_min are removed before the assignment (their gain set to 0) rather than
+// after it: otherwise maximising the total could pick two sub-threshold pairs over one good
+// pair (0.69 + 0.69 > 0.8), and the good pair would be lost.
+#include <dynslam/core/Perception.h>
+#include <dynslam/tracking/BoxNoiseModel.h>
+
+#include <opencv2/core/types.hpp>
+
+#include <string>
+#include <vector>
+
+namespace dynslam::tracking {
+
+struct KalmanBoxTrackerParams {
+  double rho_min = 0.7;  ///< accept a (track, detection) pair only if its depth IoU exceeds this
+  /// A second round for tracks that were already coasting, with this (lower) threshold: their
+  /// prediction drifts with the time hidden. >= rho_min: no second round (the paper's rule).
+  double rho_min_coasting = 0.7;
+  /// Detector frames a confirmed track coasts unmatched before it is Lost: 2 s at 30 Hz, as a
+  /// person hidden for 1 s goes without detection for about 1.3 s (partly hidden before and
+  /// after) and the prediction must still be there when it comes back.
+  int max_age = 60;
+  int min_hits = 3;  ///< matched frames (the first included) that confirm a track
+  BoxNoiseParams noise;
+};
+
+/// One detection as the tracker sees it.
+struct BoxObservation {
+  cv::Rect2f box;
+  double depth = 0;  ///< object depth d, m; <= 0 when unknown (IoU alone then)
+  std::string category;
+  core::MotionModel model = core::MotionModel::NonRigid;
+};
+
+class KalmanBoxTracker {
+ public:
+  explicit KalmanBoxTracker(KalmanBoxTrackerParams params = {});
+
+  /// Predicts every track to time t (s). The first call only sets the clock; a t at or before
+  /// the last one predicts nothing.
+  void predict(double t);
+
+  /// Associates the observations made at the time of the last predict() with the tracks and
+  /// updates them (see above). `image`, when not empty, is the image the boxes were clipped
+  /// to: predicted boxes are clipped to it before the depth IoU, and a coasting track whose
+  /// predicted box is less than half inside it is dropped (the object has left the view).
+  void update(const std::vector<BoxObservation>& observations, const cv::Size& image = {});
+
+  /// The live tracks (Confirmed and Tentative) after the last predict() or update(): boxes and
+  /// depths from the filters (predicted while coasting, not clipped to the image), `detection`
+  /// = the observation index matched by the last update(), -1 while coasting or after a
+  /// predict() without an update().
+  std::vector<core::Track> tracks() const;
+
+  const KalmanBoxTrackerParams& params() const { return params_; }
+  int tracksStarted() const { return next_id_ - 1; }
+  int tracksLost() const { return lost_; }
+
+ private:
+  struct Tracked {
+    core::Track track;  // id, state, category, model, detection, hits, misses
+    KalmanBoxFilter filter;
+  };
+
+  /// One assignment round: the tracks without an observation yet (only those already coasting
+  /// when `coastingOnly`) against the observations not used yet, by the Hungarian algorithm on
+  /// the depth IoU, pairs accepted when rho > threshold. Predicted boxes are clipped to `image`
+  /// (when given) as detections are.
+  void associate(const std::vector<BoxObservation>& observations, const cv::Size& image,
+                 double threshold, bool coastingOnly, std::vector<int>& observationOf,
+                 std::vector<char>& observationUsed) const;
+  void startTrack(const BoxObservation& observation, int index);
+  /// True when the unmatched track `t` is to be dropped now.
+  bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
+
+  KalmanBoxTrackerParams params_;
+  std::vector<Tracked> tracked_;
+  double last_t_ = 0;
+  bool clock_set_ = false;
+  int next_id_ = 1;
+  int lost_ = 0;
+};
+
+}  // namespace dynslam::tracking

@@ -1,0 +1,136 @@
+#include "dynslam/tracking/KalmanBoxTracker.h"
+
+#include <dynslam/core/HungarianAssignment.h>
+#include "dynslam/tracking/DepthIoU.h"
+
+#include <algorithm>
+
+namespace dynslam::tracking {
+
+KalmanBoxTracker::KalmanBoxTracker(KalmanBoxTrackerParams params) : params_(std::move(params)) {}
+
+void KalmanBoxTracker::predict(double t) {
+  const double dt = clock_set_ ? t - last_t_ : 0.0;
+  if (!clock_set_ || dt > 0) {
+    last_t_ = t;
+    clock_set_ = true;
+  }
+  for (auto& tr : tracked_) {
+    tr.track.detection = -1;
+    if (dt <= 0) continue;
+    const BoxState& x = tr.filter.state();
+    // While coasting the box keeps its size: over more than a few frames a linear extrapolation
+    // of the area goes badly wrong (people turn round, boxes are clipped at the image border;
+    // a box extrapolated for 1.5 s shrank to 20 x 38 px in bench-tracking), and a shrinking box
+    // is never re-associated. SORT only stops it from turning negative.
+    if (tr.track.misses > 0 || x(kS) + dt * x(kRateS) <= 0) tr.filter.stopAreaRate();
+    tr.filter.predict(dt, processNoise(params_.noise, tr.filter.state(), dt));
+  }
+}
+
+void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations,
+                                 const cv::Size& image, double threshold, bool coastingOnly,
+                                 std::vector<int>& observationOf,
+                                 std::vector<char>& observationUsed) const {
+  std::vector<int> rows, cols;
+  for (size_t i = 0; i < tracked_.size(); ++i)
+    if (observationOf[i] < 0 && (!coastingOnly || tracked_[i].track.misses > 0))
+      rows.push_back(int(i));
+  for (size_t j = 0; j < observations.size(); ++j)
+    if (!observationUsed[j]) cols.push_back(int(j));
+  if (rows.empty() || cols.empty()) return;
+
+  // rho of every (track, observation) pair; 0 where the categories differ or rho <= threshold.
+  Eigen::MatrixXd rho = Eigen::MatrixXd::Zero(rows.size(), cols.size());
+  const cv::Rect2f frame(0, 0, float(image.width), float(image.height));
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const Tracked& tr = tracked_[rows[r]];
+    // Detectors clip their boxes to the image: compare like with like.
+    const cv::Rect2f predicted = image.empty() ? tr.filter.box() : tr.filter.box() & frame;
+    const double depth = tr.filter.state()(kD);
+    for (size_t c = 0; c < cols.size(); ++c) {
+      const BoxObservation& o = observations[cols[c]];
+      if (o.category != tr.track.category) continue;
+      const double value = depthIoU(predicted, depth, o.box, o.depth);
+      if (value > threshold) rho(r, c) = value;
+    }
+  }
+  const std::vector<int> assigned = core::solveMaxGainAssignment(rho);
+  for (size_t r = 0; r < rows.size(); ++r)
+    if (assigned[r] >= 0 && rho(r, assigned[r]) > threshold) {
+      observationOf[rows[r]] = cols[assigned[r]];
+      observationUsed[cols[assigned[r]]] = 1;
+    }
+}
+
+void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
+                              const cv::Size& image) {
+  std::vector<int> observationOf(tracked_.size(), -1);
+  std::vector<char> observationUsed(observations.size(), 0);
+  associate(observations, image, params_.rho_min, false, observationOf, observationUsed);
+  if (params_.rho_min_coasting < params_.rho_min)
+    associate(observations, image, params_.rho_min_coasting, true, observationOf, observationUsed);
+
+  std::vector<Tracked> kept;
+  kept.reserve(tracked_.size() + observations.size());
+  for (size_t i = 0; i < tracked_.size(); ++i) {
+    Tracked& tr = tracked_[i];
+    const int j = observationOf[i];
+    if (j >= 0) {
+      const BoxObservation& o = observations[j];
+      BoxMeasurement z = boxMeasurement(o.box, o.depth);
+      if (!(o.depth > 0)) z(kD) = tr.filter.state()(kD);  // no depth: leave d as it is
+      tr.filter.update(z, measurementNoise(params_.noise, z));
+      tr.track.detection = j;
+      ++tr.track.hits;
+      tr.track.misses = 0;
+      if (tr.track.hits >= params_.min_hits) tr.track.state = core::TrackState::Confirmed;
+      kept.push_back(std::move(tr));
+      continue;
+    }
+    ++tr.track.misses;
+    if (loseAfterMiss(tr, image)) {
+      ++lost_;
+      continue;
+    }
+    kept.push_back(std::move(tr));
+  }
+  tracked_ = std::move(kept);
+  for (size_t j = 0; j < observations.size(); ++j)
+    if (!observationUsed[j]) startTrack(observations[j], int(j));
+}
+
+bool KalmanBoxTracker::loseAfterMiss(const Tracked& t, const cv::Size& image) const {
+  if (t.track.state != core::TrackState::Confirmed) return true;
+  if (t.track.misses > params_.max_age) return true;
+  if (image.empty()) return false;
+  const cv::Rect2f box = t.filter.box();
+  const double inside = (box & cv::Rect2f(0, 0, float(image.width), float(image.height))).area();
+  return !(inside >= 0.5 * box.area() && box.area() > 0);
+}
+
+void KalmanBoxTracker::startTrack(const BoxObservation& observation, int index) {
+  const BoxMeasurement z = boxMeasurement(observation.box, observation.depth);
+  Tracked t{core::Track{}, KalmanBoxFilter(initialState(z), initialCovariance(params_.noise, z))};
+  t.track.id = next_id_++;
+  t.track.state = params_.min_hits <= 1 ? core::TrackState::Confirmed : core::TrackState::Tentative;
+  t.track.category = observation.category;
+  t.track.model = observation.model;
+  t.track.detection = index;
+  t.track.hits = 1;
+  tracked_.push_back(std::move(t));
+}
+
+std::vector<core::Track> KalmanBoxTracker::tracks() const {
+  std::vector<core::Track> out;
+  out.reserve(tracked_.size());
+  for (const auto& tr : tracked_) {
+    core::Track t = tr.track;
+    t.box = tr.filter.box();
+    t.depth = tr.filter.state()(kD);
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+}  // namespace dynslam::tracking

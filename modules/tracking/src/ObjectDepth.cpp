@@ -1,0 +1,36 @@
+#include "dynslam/tracking/ObjectDepth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace dynslam::tracking {
+
+double medianDepthInCentralHalf(const cv::Mat& depth, const cv::Rect2f& box) {
+  if (depth.empty() || depth.type() != CV_32FC1) return 0.0;
+  const cv::Rect2f half(box.x + 0.25f * box.width, box.y + 0.25f * box.height, 0.5f * box.width,
+                        0.5f * box.height);
+  const cv::Rect roi =
+      cv::Rect(cvFloor(half.x), cvFloor(half.y), cvCeil(half.width), cvCeil(half.height)) &
+      cv::Rect(0, 0, depth.cols, depth.rows);
+  std::vector<float> valid;
+  valid.reserve(roi.area());
+  for (int y = roi.y; y < roi.y + roi.height; ++y) {
+    const float* row = depth.ptr<float>(y);
+    for (int x = roi.x; x < roi.x + roi.width; ++x)
+      if (row[x] > 0 && std::isfinite(row[x])) valid.push_back(row[x]);
+  }
+  if (valid.empty()) return 0.0;
+  const auto middle = valid.begin() + valid.size() / 2;
+  std::nth_element(valid.begin(), middle, valid.end());
+  return *middle;
+}
+
+double measuredObjectDepth(const core::Frame& frame, size_t detection) {
+  for (const auto& mask : frame.object_masks)
+    if (mask.detection == int(detection) && mask.valid && mask.d_t > 0) return mask.d_t;
+  if (detection >= frame.detections.size()) return 0.0;
+  return medianDepthInCentralHalf(frame.depth, frame.detections[detection].box);
+}
+
+}  // namespace dynslam::tracking

@@ -1,0 +1,11 @@
+#include "dynslam/tracking/RegisterStages.h"
+
+#include "dynslam/tracking/TrackingStage.h"
+
+#include <dynslam/core/StageRegistry.h>
+
+namespace dynslam::tracking {
+
+void registerStages(core::StageRegistry& registry) { registry.add<TrackingStage>("Tracking"); }
+
+}  // namespace dynslam::tracking

@@ -1,0 +1,123 @@
+#include "dynslam/tracking/TrackingStage.h"
+
+#include "dynslam/tracking/ObjectDepth.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+namespace dynslam::tracking {
+namespace {
+
+// One ini key per field; the key is the field's name without the struct prefix.
+#define TRACKING_READ(type, field, key) field = c.read_##type(s, key, field)
+#define TRACKING_WRITE(field, key, comment)                      \
+  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(), \
+          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment)
+
+void requirePositive(double value, const char* key, const std::string& section,
+                     const std::string& source) {
+  if (!(value > 0))
+    throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +
+                            source + ": must be > 0");
+}
+
+}  // namespace
+
+void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                         const std::string& s) {
+  auto& t = tracker;
+  auto& n = tracker.noise;
+  TRACKING_READ(double, t.rho_min, "rho_min");
+  TRACKING_READ(double, t.rho_min_coasting, "rho_min_coasting");
+  TRACKING_READ(int, t.max_age, "max_age");
+  TRACKING_READ(int, t.min_hits, "min_hits");
+  TRACKING_READ(double, n.meas_center_px, "meas_center_px");
+  TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
+  TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
+  TRACKING_READ(double, n.meas_ratio, "meas_ratio");
+  TRACKING_READ(double, n.accel_center_px, "accel_center_px");
+  TRACKING_READ(double, n.accel_area_rel, "accel_area_rel");
+  TRACKING_READ(double, n.accel_depth, "accel_depth");
+  TRACKING_READ(double, n.ratio_walk, "ratio_walk");
+  TRACKING_READ(double, n.init_rate_center_px, "init_rate_center_px");
+  TRACKING_READ(double, n.init_rate_area_rel, "init_rate_area_rel");
+  TRACKING_READ(double, n.init_rate_depth, "init_rate_depth");
+}
+
+void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                       const std::string& s) const {
+  const auto& t = tracker;
+  const auto& n = tracker.noise;
+  TRACKING_WRITE(t.rho_min, "rho_min", "accept a track-detection pair only if depth IoU > this");
+  TRACKING_WRITE(t.rho_min_coasting, "rho_min_coasting",
+                 "2nd round for coasting tracks above this; >= rho_min: none (paper)");
+  TRACKING_WRITE(t.max_age, "max_age", "detector frames a confirmed track coasts unmatched");
+  TRACKING_WRITE(t.min_hits, "min_hits", "matched frames that confirm a new track");
+  TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
+  TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
+  TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");
+  TRACKING_WRITE(n.meas_ratio, "meas_ratio", "sigma of the measured aspect ratio w/h");
+  TRACKING_WRITE(n.accel_center_px, "accel_center_px", "px/s^2/sqrt(Hz); centre acceleration");
+  TRACKING_WRITE(n.accel_area_rel, "accel_area_rel", "1/s^2/sqrt(Hz); area accel. / area");
+  TRACKING_WRITE(n.accel_depth, "accel_depth", "m/s^2/sqrt(Hz); depth acceleration");
+  TRACKING_WRITE(n.ratio_walk, "ratio_walk", "1/sqrt(s); random walk of the aspect ratio");
+  TRACKING_WRITE(n.init_rate_center_px, "init_rate_center_px", "px/s; new track's centre rate");
+  TRACKING_WRITE(n.init_rate_area_rel, "init_rate_area_rel", "1/s; new track's area rate / area");
+  TRACKING_WRITE(n.init_rate_depth, "init_rate_depth", "m/s; new track's depth rate sigma");
+}
+
+void TrackingStage::configure(const core::IniConfig& cfg, const std::string& section) {
+  core::loadOptionsStrict(options_, cfg, section);
+  const auto& t = options_.tracker;
+  const auto& n = t.noise;
+  if (!(t.rho_min >= 0 && t.rho_min < 1))
+    throw core::ConfigError("[" + section + "] rho_min = " + std::to_string(t.rho_min) + " in " +
+                            cfg.source() + ": must be in [0, 1)");
+  if (!(t.rho_min_coasting >= 0 && t.rho_min_coasting < 1))
+    throw core::ConfigError("[" + section +
+                            "] rho_min_coasting = " + std::to_string(t.rho_min_coasting) + " in " +
+                            cfg.source() + ": must be in [0, 1)");
+  if (t.max_age < 0)
+    throw core::ConfigError("[" + section + "] max_age = " + std::to_string(t.max_age) + " in " +
+                            cfg.source() + ": must be >= 0");
+  if (t.min_hits < 1)
+    throw core::ConfigError("[" + section + "] min_hits = " + std::to_string(t.min_hits) + " in " +
+                            cfg.source() + ": must be >= 1");
+  const std::pair<double, const char*> positive[] = {{n.meas_center_px, "meas_center_px"},
+                                                     {n.meas_area_rel, "meas_area_rel"},
+                                                     {n.meas_depth_rel, "meas_depth_rel"},
+                                                     {n.meas_ratio, "meas_ratio"},
+                                                     {n.accel_center_px, "accel_center_px"},
+                                                     {n.accel_area_rel, "accel_area_rel"},
+                                                     {n.accel_depth, "accel_depth"},
+                                                     {n.ratio_walk, "ratio_walk"},
+                                                     {n.init_rate_center_px, "init_rate_center_px"},
+                                                     {n.init_rate_area_rel, "init_rate_area_rel"},
+                                                     {n.init_rate_depth, "init_rate_depth"}};
+  for (const auto& [value, key] : positive) requirePositive(value, key, section, cfg.source());
+  tracker_ = KalmanBoxTracker(t);
+}
+
+void TrackingStage::process(core::Frame& frame) {
+  ++frames_;
+  tracker_.predict(frame.t);
+  if (frame.detections_fresh) {
+    ++detectorFrames_;
+    std::vector<BoxObservation> observations;
+    observations.reserve(frame.detections.size());
+    for (size_t i = 0; i < frame.detections.size(); ++i) {
+      const auto& d = frame.detections[i];
+      observations.push_back({d.box, measuredObjectDepth(frame, i), d.category, d.model});
+    }
+    const cv::Size image = !frame.rgb.empty() ? frame.rgb.size() : frame.depth.size();
+    tracker_.update(observations, image);
+  }
+  frame.tracks = tracker_.tracks();
+}
+
+void TrackingStage::finish() {
+  MRPT_LOG_INFO_STREAM(frames_ << " frames (" << detectorFrames_ << " with fresh detections), "
+                               << tracker_.tracksStarted() << " tracks started, "
+                               << tracker_.tracksLost() << " lost");
+}
+
+}  // namespace dynslam::tracking

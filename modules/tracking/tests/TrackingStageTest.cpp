@@ -1,0 +1,118 @@
+#include <dynslam/core/Config.h>
+#include <dynslam/core/StageRegistry.h>
+#include <dynslam/tracking/RegisterStages.h>
+#include <dynslam/tracking/TrackingStage.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace dynslam;
+using namespace dynslam::tracking;
+
+namespace {
+
+core::Frame frameAt(int k, bool fresh, float x) {
+  core::Frame f;
+  f.index = k;
+  f.t = 100.0 + k / 30.0;
+  f.depth = cv::Mat(480, 640, CV_32FC1, cv::Scalar(5.0f));
+  f.detections_fresh = fresh;
+  if (fresh) {
+    core::Detection d;
+    d.box = cv::Rect2f(x, 100, 60, 180);
+    d.category = "person";
+    f.detections.push_back(d);
+    core::ObjectMask m;
+    m.detection = 0;
+    m.valid = true;
+    m.d_t = 2.0;
+    f.object_masks.push_back(m);
+  }
+  return f;
+}
+
+std::string errorOf(const std::string& ini) {
+  TrackingStage stage;
+  try {
+    stage.configure(core::IniConfig::fromText(ini, "test.ini"), "Tracking");
+  } catch (const core::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(TrackingStage, RegisteredAndConfiguredFromItsSection) {
+  core::StageRegistry registry;
+  registerStages(registry);
+  auto stage = registry.create("Tracking");
+  ASSERT_TRUE(dynamic_cast<TrackingStage*>(stage.get()));
+  stage->configure(
+      core::IniConfig::fromText("[Tracking]\nrho_min = 0.5\nmax_age = 12\nmin_hits = 2\n"
+                                "meas_center_px = 4.5\naccel_depth = 0.5\n"),
+      "Tracking");
+  const auto& o = static_cast<TrackingStage&>(*stage).options().tracker;
+  EXPECT_EQ(o.rho_min, 0.5);
+  EXPECT_EQ(o.max_age, 12);
+  EXPECT_EQ(o.min_hits, 2);
+  EXPECT_EQ(o.noise.meas_center_px, 4.5);
+  EXPECT_EQ(o.noise.accel_depth, 0.5);
+  EXPECT_EQ(o.noise.meas_area_rel, BoxNoiseParams().meas_area_rel) << "defaults kept";
+}
+
+TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
+  const auto keys = core::knownKeys(TrackingOptions());
+  for (const char* key :
+       {"rho_min", "rho_min_coasting", "max_age", "min_hits", "meas_center_px", "meas_area_rel",
+        "meas_depth_rel", "meas_ratio", "accel_center_px", "accel_area_rel", "accel_depth",
+        "ratio_walk", "init_rate_center_px", "init_rate_area_rel", "init_rate_depth"})
+    EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+  EXPECT_EQ(keys.size(), 15u);
+  EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nmin_hits = 0\n").find("min_hits"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nratio_walk = 0\n").find("ratio_walk"), std::string::npos);
+  EXPECT_EQ(errorOf("[Tracking]\n"), "");
+}
+
+TEST(TrackingStage, FramesWithoutFreshDetectionsCarryPredictedBoxes) {
+  TrackingStage stage;
+  stage.configure(core::IniConfig::fromText("[Tracking]\n"), "Tracking");
+  for (int k = 0; k < 20; ++k) {  // 3 px per frame
+    core::Frame f = frameAt(k, true, 100 + 3.0f * k);
+    stage.process(f);
+    ASSERT_EQ(f.tracks.size(), 1u);
+    EXPECT_EQ(f.tracks[0].detection, 0);
+    EXPECT_NEAR(f.tracks[0].depth, 2.0, 1e-6) << "the segmentation's d_t, not the 5 m image";
+  }
+  // The detector thread was busy for two frames: the tracker predicts on its own.
+  for (int k = 20; k < 22; ++k) {
+    core::Frame f = frameAt(k, false, 0);
+    stage.process(f);
+    ASSERT_EQ(f.tracks.size(), 1u);
+    const core::Track& t = f.tracks[0];
+    EXPECT_EQ(t.detection, -1);
+    EXPECT_EQ(t.misses, 0) << "not a detector frame, not a miss";
+    EXPECT_EQ(t.state, core::TrackState::Confirmed);
+    EXPECT_NEAR(t.box.x, 100 + 3.0 * k, 1.0);
+  }
+  core::Frame f = frameAt(22, true, 166);
+  stage.process(f);
+  ASSERT_EQ(f.tracks.size(), 1u);
+  EXPECT_EQ(f.tracks[0].id, 1);
+  EXPECT_EQ(f.tracks[0].detection, 0);
+}
+
+TEST(TrackingStage, WithoutMasksTheDepthComesFromTheBox) {
+  TrackingStage stage;
+  stage.configure(core::IniConfig::fromText("[Tracking]\n"), "Tracking");
+  core::Frame f = frameAt(0, true, 100);
+  f.object_masks.clear();
+  stage.process(f);
+  ASSERT_EQ(f.tracks.size(), 1u);
+  EXPECT_NEAR(f.tracks[0].depth, 5.0, 1e-6);
+}
