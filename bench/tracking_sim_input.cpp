@@ -1,6 +1,7 @@
 #include "tracking_sim_input.h"
 
 #include <dynslam/core/Config.h>
+#include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/detection/GroundTruthDetector.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 #include <dynslam/segmentation/MaskQuality.h>
@@ -11,7 +12,6 @@
 #include <unistd.h>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <map>
 
 namespace dynslam::bench {
@@ -30,18 +30,12 @@ std::string writeObjects(const sim::Simulator& simulator, size_t frames, const s
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/objects.txt";
   std::ofstream out(path);
-  out << std::setprecision(17);
+  out << core::kObjectGroundTruthHeader;
   sim::SimFrame f;
   for (size_t i = 0; i < frames; ++i) {
     simulator.renderFrame(i, f);
-    for (const auto& o : f.objects) {
-      const Eigen::Vector3d p = o.T_world_object.translation();
-      const Eigen::Quaterniond q(o.T_world_object.linear());
-      out << i << ' ' << f.t << ' ' << o.id << ' ' << o.category << ' ' << (o.moving ? 1 : 0) << ' '
-          << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z()
-          << ' ' << q.w() << ' ' << o.box.x << ' ' << o.box.y << ' ' << o.box.width << ' '
-          << o.box.height << ' ' << o.visible_pixels << ' ' << o.visible_fraction << '\n';
-    }
+    for (const auto& o : f.objects)
+      core::writeObjectGroundTruthRow(out, sim::groundTruthRow(i, f.t, o));
   }
   return path;
 }

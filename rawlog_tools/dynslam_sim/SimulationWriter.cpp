@@ -1,5 +1,6 @@
 #include "SimulationWriter.h"
 
+#include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/ObservationBuilders.h>
@@ -45,16 +46,7 @@ SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Sequenc
   fs::create_directories(fs::path(dir_) / "labels");
   groundtruth_ = openText(fs::path(dir_) / "groundtruth.tum",
                           "# camera (optical frame) pose in the world: t tx ty tz qx qy qz qw\n");
-  objects_ = openText(
-      fs::path(dir_) / "objects.txt",
-      "# dynslam-sim object ground truth: one line per frame and object at least partly in view\n"
-      "# frame t id class moving tx ty tz qx qy qz qw box_x box_y box_w box_h visible_pixels "
-      "visible_fraction\n"
-      "# pose: the object's rigid core in the world (a person's torso centre, a car's body\n"
-      "# centre); box: amodal, in pixels, clipped to the image (an object hidden behind a wall\n"
-      "# is listed with 0 visible pixels); visible_fraction: visible pixels / pixels it would\n"
-      "# cover with nothing in front of it; labels/NNNNNN.png holds `id` at the visible pixels.\n"
-      "# class: person | car; moving: 1 when it moves at t (0: standing person, parked car).\n");
+  objects_ = openText(fs::path(dir_) / "objects.txt", core::kObjectGroundTruthHeader);
   biases_ = openText(fs::path(dir_) / "imu_biases.txt",
                      "# true IMU biases: t gyro_bias_xyz (rad/s) acc_bias_xyz (m/s^2)\n");
 }
@@ -97,15 +89,8 @@ void SimulationWriter::write(const sim::SimFrame& frame) {
   if (!cv::imwrite(labels, frame.image.label))
     throw ConversionError("cannot write '" + labels + "'");
   core::appendTumLine(groundtruth_, {stamp(frame.t), frame.T_world_camera});
-  for (const auto& o : frame.objects) {
-    const Eigen::Quaterniond q(o.T_world_object.rotation());
-    const Eigen::Vector3d p = o.T_world_object.translation();
-    objects_ << frame.index << ' ' << stamp(frame.t) << ' ' << o.id << ' ' << o.category << ' '
-             << (o.moving ? 1 : 0) << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x()
-             << ' ' << q.y() << ' ' << q.z() << ' ' << q.w() << ' ' << o.box.x << ' ' << o.box.y
-             << ' ' << o.box.width << ' ' << o.box.height << ' ' << o.visible_pixels << ' '
-             << o.visible_fraction << '\n';
-  }
+  for (const auto& o : frame.objects)
+    core::writeObjectGroundTruthRow(objects_, sim::groundTruthRow(frame.index, stamp(frame.t), o));
 }
 
 void SimulationWriter::finish() {

@@ -4,9 +4,32 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <ostream>
 #include <sstream>
 
 namespace dynslam::core {
+
+const char* const kObjectGroundTruthHeader =
+    "# dynslam-sim object ground truth: one line per frame and object at least partly in view\n"
+    "# frame t id class moving tx ty tz qx qy qz qw box_x box_y box_w box_h visible_pixels "
+    "visible_fraction\n"
+    "# pose: the object's rigid core in the world (a person's torso centre, a car's body\n"
+    "# centre); box: amodal, in pixels, clipped to the image (an object hidden behind a wall\n"
+    "# is listed with 0 visible pixels); visible_fraction: visible pixels / pixels it would\n"
+    "# cover with nothing in front of it; labels/NNNNNN.png holds `id` at the visible pixels.\n"
+    "# class: person | car; moving: 1 when it moves at t (0: standing person, parked car).\n";
+
+void writeObjectGroundTruthRow(std::ostream& out, const ObjectGroundTruthRow& r) {
+  const auto precision = out.precision(17);
+  const Eigen::Quaterniond q(r.T_world_object.rotation());
+  const Eigen::Vector3d p = r.T_world_object.translation();
+  out << r.frame << ' ' << r.t << ' ' << r.id << ' ' << r.category << ' ' << (r.moving ? 1 : 0)
+      << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x() << ' ' << q.y() << ' '
+      << q.z() << ' ' << q.w() << ' ' << r.box.x << ' ' << r.box.y << ' ' << r.box.width << ' '
+      << r.box.height << ' ' << r.visible_pixels << ' ' << r.visible_fraction << '\n';
+  out.precision(precision);
+}
+
 namespace {
 
 constexpr const char* kLayout =

@@ -20,16 +20,6 @@ namespace fs = std::filesystem;
 namespace dynslam::sim {
 namespace {
 
-// Independent random streams of one run (see subSeed); the Simulator's numbering where the
-// meaning is the same.
-enum Stream : uint64_t {
-  kSceneStream = 0,
-  kImuStream = 1,
-  kGnssStream = 2,
-  kFloorStream = 3,
-  kFrameStreams = 1000
-};
-
 // sevenscenes2rawlog writes the same stamp to the observation and to the ground truth; MRPT's
 // clock keeps 100 ns ticks, so 1 ms is loose enough for rounding and far below a frame period.
 constexpr double kStampTolerance = 1e-3;

@@ -13,9 +13,6 @@
 namespace dynslam::sim {
 namespace {
 
-// Independent random streams of one run (see subSeed).
-enum Stream : uint64_t { kSceneStream = 0, kImuStream = 1, kGnssStream = 2, kFrameStreams = 1000 };
-
 Scene buildScene(const ScenarioOptions& o, TextureLibrary& textures, std::mt19937_64& rng) {
   if (o.world.scene == "market") return buildMarketScene(o, textures, rng);
   if (o.world.scene == "street") return buildStreetScene(o, textures, rng);

@@ -83,7 +83,9 @@ TEST(SimStreet, CarsDriveAtTheirSpeedParkedCarsAndStandingPeopleStayPut) {
     if (a.moving) {
       ++moving[kind];
       // Straight stretches: the full speed; round the block's ends a little less.
-      if (kind == "car") EXPECT_NEAR(metres, 8.0, 1.0);
+      if (kind == "car") {
+        EXPECT_NEAR(metres, 8.0, 1.0);
+      }
     } else {
       ++still[kind];
       EXPECT_LT(metres, 1e-12);
@@ -127,7 +129,9 @@ TEST(SimMarket, RouteStaysInTheAislesAndPeopleAreSeen) {
     // A shelf never fills the view: the aisle ahead stays open.
     const float ahead = f.image.depth.at<float>(f.image.depth.rows / 2, f.image.depth.cols / 2);
     const uint16_t who = f.image.label.at<uint16_t>(f.image.label.rows / 2, f.image.label.cols / 2);
-    if (who == 0) EXPECT_TRUE(ahead == 0 || ahead > 1.0) << "frame " << i << ": " << ahead;
+    if (who == 0) {
+      EXPECT_TRUE(ahead == 0 || ahead > 1.0) << "frame " << i << ": " << ahead;
+    }
     for (const auto& obj : f.objects) seenPeople += obj.visible_pixels > 50;
   }
   EXPECT_GT(seenPeople, 5);

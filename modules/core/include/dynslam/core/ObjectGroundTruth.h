@@ -1,6 +1,6 @@
 #pragma once
-// Reading the simulator's object ground truth (dynslam-sim's objects.txt): one line per frame and
-// object at least partly in view,
+// Writing and reading the simulator's object ground truth (dynslam-sim's objects.txt): one line per
+// frame and object at least partly in view,
 //   frame t id class moving tx ty tz qx qy qz qw box_x box_y box_w box_h visible_pixels
 //   visible_fraction
 // with t the frame's rawlog stamp (Unix seconds), the pose the object's rigid core in the world
@@ -10,6 +10,7 @@
 #include <opencv2/core/types.hpp>
 
 #include <cstddef>
+#include <iosfwd>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,13 @@ struct ObjectGroundTruthRow {
   int visible_pixels = 0;       ///< pixels that show it
   double visible_fraction = 0;  ///< visible pixels / pixels it would cover unoccluded
 };
+
+/// The comment block objects.txt starts with: the column layout and what each column means.
+extern const char* const kObjectGroundTruthHeader;
+
+/// Appends `row` as one line of objects.txt, numbers at full precision (17 significant digits)
+/// so readObjectGroundTruth gets the same values back; `out`'s own precision is left as it was.
+void writeObjectGroundTruthRow(std::ostream& out, const ObjectGroundTruthRow& row);
 
 /// Every row of `path` in file order. Throws ObjectGroundTruthError naming the file when it
 /// cannot be read, and the file and 1-based line when a line is malformed.

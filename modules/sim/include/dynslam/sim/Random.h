@@ -12,6 +12,16 @@ inline double uniformReal(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
+/// The independent random streams of one simulated run (see subSeed): the same numbering in every
+/// sequence source, so a stream means the same thing in the Simulator and the Augmenter.
+enum RandomStream : uint64_t {
+  kSceneStream = 0,     ///< layout, textures, agents
+  kImuStream = 1,       ///< IMU noise and bias walk
+  kGnssStream = 2,      ///< GNSS noise
+  kFloorStream = 3,     ///< augment mode's floor RANSAC
+  kFrameStreams = 1000  ///< + frame index: that frame's image noise
+};
+
 /// A seed for stream `stream` of a run seeded with `seed` (splitmix64 of both), so that frame
 /// i's noise, the IMU's noise and the scene's layout are independent and each reproducible.
 inline uint64_t subSeed(uint64_t seed, uint64_t stream) {

@@ -4,6 +4,7 @@
 // rendered movers into a real RGB-D sequence. The writer (rawlog + ground truth files) and
 // dynslam-sim only see this interface.
 #include <dynslam/core/Frame.h>
+#include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/sim/GnssSynthesizer.h>
 #include <dynslam/sim/ImuSynthesizer.h>
 #include <dynslam/sim/Rasterizer.h>
@@ -27,6 +28,22 @@ struct ObjectTruth {
   int visible_pixels = 0;       ///< pixels with its label
   double visible_fraction = 0;  ///< visible / pixels it would cover with nothing in front
 };
+
+/// The objects.txt row of `truth` in frame `frame` stamped `stamp` (Unix seconds).
+inline core::ObjectGroundTruthRow groundTruthRow(size_t frame, double stamp,
+                                                 const ObjectTruth& truth) {
+  core::ObjectGroundTruthRow row;
+  row.frame = frame;
+  row.t = stamp;
+  row.id = truth.id;
+  row.category = truth.category;
+  row.moving = truth.moving;
+  row.T_world_object = truth.T_world_object;
+  row.box = truth.box;
+  row.visible_pixels = truth.visible_pixels;
+  row.visible_fraction = truth.visible_fraction;
+  return row;
+}
 
 struct SimFrame {
   size_t index = 0;
