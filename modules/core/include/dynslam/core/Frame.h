@@ -2,10 +2,12 @@
 // The unit of work that flows through the pipeline: one RGB-D image pair plus everything the
 // other sensors said since the previous one. Stages read what earlier stages wrote and add
 // their own output. Kept free of MRPT headers: every stage includes this file.
+#include <dynslam/core/Features.h>
 #include <dynslam/core/Perception.h>
 #include <dynslam/core/Trajectory.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <opencv2/core/mat.hpp>
 
 #include <cstddef>
@@ -51,6 +53,12 @@ struct Frame {
   cv::Mat depth;  ///< CV_32FC1, metres along the optical axis, 0 = invalid, registered to rgb
   CameraIntrinsics intrinsics;
 
+  /// Where the sensors sit on the body (robot) frame, from the observations' sensorPose: the
+  /// colour camera's optical frame (x right, y down, z forward) and the IMU's axes. Identity
+  /// when the rawlog does not say.
+  Eigen::Isometry3d T_body_camera = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d T_body_imu = Eigen::Isometry3d::Identity();
+
   std::vector<ImuSample> imu;  ///< samples with t in (previous frame's t, t]
   std::vector<GnssFix> gnss;   ///< fixes with t in (previous frame's t, t]
 
@@ -62,6 +70,12 @@ struct Frame {
   bool detections_fresh = false;
   std::vector<ObjectMask> object_masks;
   std::vector<Track> tracks;
+
+  /// Visual front-end (method.md sections 3-4): the tracked features, the motion state of each
+  /// tracked object seen with features, the rigid point sets of dynamic objects.
+  std::vector<Feature> features;
+  std::vector<ObjectMotionState> object_motions;
+  std::vector<RigidSet> rigid_sets;
 
   /// Camera pose in the world, set by the stage that estimates it.
   std::optional<Eigen::Isometry3d> T_world_camera;

@@ -23,7 +23,10 @@ struct Detection {
 
 /// Depth-threshold segmentation of one detection (method.md section 1; SegmentationStage).
 struct ObjectMask {
-  int detection = -1;  ///< index into Frame::detections
+  int detection = -1;  ///< index into Frame::detections; -1 when it segments a predicted box
+  /// Index into Frame::tracks of the track it belongs to, once a tracking stage has run (the
+  /// track matched to its detection, or the track whose predicted box it segments); -1 = none.
+  int track = -1;
   cv::Rect roi;        ///< the detection box in whole pixels, clipped; `mask` covers exactly it
   cv::Mat mask;        ///< CV_8UC1, roi-sized, 255 = object pixel
   double d_t = 0;      ///< object depth, m (far cluster of the candidate box)
