@@ -1,0 +1,37 @@
+#pragma once
+// The DynamicClassification stage (ini section [DynamicClassification]): runs a
+// DynamicClassifier (scene-flow classification and adaptive rigid point sets, method.md
+// sections 3-4) on every frame. Runs after the perception stages (masks and tracks) and
+// FeatureTracking (features with ids, pixels and depths); writes each feature's class and
+// object id, Frame::object_motions and Frame::rigid_sets. The keys and their defaults are in
+// saveToConfigFile (the generated key reference).
+#include <dynslam/core/Stage.h>
+#include <dynslam/frontend/DynamicClassifier.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <memory>
+
+namespace dynslam::frontend {
+
+struct DynamicClassificationOptions : mrpt::config::CLoadableOptions {
+  DynamicClassifierParams classifier;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+class DynamicClassificationStage : public core::Stage {
+ public:
+  void configure(const core::IniConfig& cfg, const std::string& section) override;
+  void process(core::Frame& frame) override;
+  void finish() override;
+
+  const DynamicClassificationOptions& options() const { return options_; }
+
+ private:
+  DynamicClassificationOptions options_;
+  std::unique_ptr<DynamicClassifier> classifier_;
+};
+
+}  // namespace dynslam::frontend

@@ -1,0 +1,97 @@
+#pragma once
+// Scene-flow classification of the tracked features (method.md section 3) with the adaptive
+// rigid point sets of the dynamic objects (section 4). Per frame:
+//  1. each feature belongs to the object whose mask holds it (ObjectMembership.h), else to the
+//     background;
+//  2. the camera's motion since the previous frame (CameraMotion.h: background registration with
+//     the gyro rotation as a hypothesis, or the poses of an earlier stage);
+//  3. the scene flow F (Eq. 11) of every object feature; the object's speed is the size of its
+//     features' flow divided by the time it spans; dynamic when above speed_threshold;
+//  4. dynamic objects update their AdaptiveRigidPointSet from the frame-to-frame pairs;
+//  5. classes: background and non-moving objects Static (a parked car, a standing person);
+//     dynamic rigid objects (cars) Rigid, except the pairs their registration rejected, which do
+//     not move with the body (NonRigid); dynamic non-rigid objects Rigid inside the rigid set,
+//     NonRigid outside it.
+//
+// Two departures from the letter of the method, both settable back to it, and why:
+//  - speed_window (default 10 frames): F is measured from the oldest position of each feature
+//    within the window, with the composed camera motion, and divided by the time between. With
+//    a D455-like depth noise (sigma = 1.5 mm/m^2 z^2: 1.4 cm at 3 m) the frame-to-frame F of a
+//    static point is ~2 cm, 0.6 m/s at 30 Hz, six times the 0.1 m/s threshold; over a third of
+//    a second the same noise is 0.06 m/s. speed_window = 1 is the method's frame interval.
+//  - speed_statistic = median_flow (default): the norm of the component-wise median of the
+//    features' flow vectors, not the mean of their norms (mean_norm, the method's wording).
+//    A mean of norms adds up the noise of every feature instead of averaging it out, and one
+//    feature on a depth edge (background depth on an object pixel) moves the mean by metres.
+// An object whose features have no flow yet (it has just appeared) keeps its last decision, or
+// counts as dynamic when it has none: it is not trusted to constrain the camera before it was
+// seen to stand still.
+#include <dynslam/core/Frame.h>
+#include <dynslam/frontend/CameraMotion.h>
+#include <dynslam/frontend/RigidPointSet.h>
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <unordered_map>
+
+namespace dynslam::frontend {
+
+enum class SpeedStatistic { MedianFlow, MeanNorm };
+
+struct DynamicClassifierParams {
+  double speed_threshold = 0.1;  ///< m/s (method.md)
+  int speed_window = 10;         ///< frames the scene flow spans at most (1: the method's)
+  SpeedStatistic speed_statistic = SpeedStatistic::MedianFlow;
+  int min_flow_features = 3;     ///< fewer features with flow: the speed is not measured
+  RigidPointSetParams rigid;     ///< the objects' rigid sets (method.md section 4)
+  CameraMotionParams camera;     ///< the background registration
+  std::uint32_t seed = 1;        ///< RANSAC draws (deterministic runs)
+};
+
+/// Counters for the stage's log and the bench.
+struct ClassifierCounts {
+  size_t frames = 0, features = 0, object_features = 0, dynamic_objects = 0, rigid_sets = 0;
+  std::map<CameraMotionSource, size_t> camera_sources;
+};
+
+class DynamicClassifier {
+ public:
+  explicit DynamicClassifier(DynamicClassifierParams params = {});
+
+  /// Fills frame.features[*].object_id and feature_class, frame.object_motions and
+  /// frame.rigid_sets. Reads frame.features (ids, pixels, depths), object_masks, tracks, imu,
+  /// the sensor extrinsics and T_world_camera. Frames must come in order.
+  void process(core::Frame& frame);
+
+  const CameraMotionEstimate& lastCameraMotion() const { return camera_; }
+  const ClassifierCounts& counts() const { return counts_; }
+  const DynamicClassifierParams& params() const { return params_; }
+
+ private:
+  struct Observation {
+    std::size_t frame = 0;  ///< counter of processed frames
+    double t = 0;
+    Eigen::Vector3d P;      ///< camera frame of that frame
+  };
+
+  /// T_{C(cur) <- C(frame)} from the chain of estimated camera motions.
+  Eigen::Isometry3d cameraFromPast(std::size_t frame) const;
+
+  DynamicClassifierParams params_;
+  CameraMotionEstimator cameraEstimator_;
+  CameraMotionEstimate camera_;
+  ClassifierCounts counts_;
+  std::size_t frame_ = 0;  ///< counter of this frame
+  std::optional<double> prevT_;
+  std::optional<Eigen::Isometry3d> prevPose_;
+  /// T_{O <- C(frame)}: camera poses in the frame of the first one, last speed_window + 1.
+  std::deque<std::pair<std::size_t, Eigen::Isometry3d>> odometry_;
+  std::unordered_map<std::int64_t, std::deque<Observation>> history_;  ///< per feature id
+  std::map<int, bool> lastDynamic_;                                    ///< per object id
+  std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
+};
+
+const char* toString(CameraMotionSource source);
+
+}  // namespace dynslam::frontend

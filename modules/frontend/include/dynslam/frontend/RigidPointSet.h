@@ -1,0 +1,73 @@
+#pragma once
+// The adaptive rigid point set of one dynamic object (method.md section 4). The first frame in
+// which the object has enough matched 3-D pairs, a coarse 4-point RANSAC over all its pairs
+// picks the largest group that moves as one rigid body (on a person, typically the torso) and
+// the precise registration refits the motion on all of it. From then on, each frame:
+//  - the hypotheses are drawn from the pairs of the current members that are still tracked, and
+//    inliers are counted over ALL the object's pairs, so a point that now moves rigidly with the
+//    set joins it (paper Fig. 5, P2) and a member that broke away is dropped (P1);
+//  - the precise registration refits (R, t) on the new inlier set;
+//  - the virtual centroid (the members' centroid when the set was created) is carried forward
+//    with that motion, c_{k+1} = R c_k + t. Members come and go, so the real centroid of the
+//    members jumps whenever one does; the virtual centroid is a fixed point of the body and
+//    gives the object a translation that is continuous across membership changes.
+// When fewer than sample_size members are still tracked, or the continued set would have fewer
+// than min_members points, the set is created afresh (new members, new virtual centroid).
+// A rigid object (car) goes through the same steps with all its features as candidates.
+#include <dynslam/core/Features.h>
+#include <dynslam/frontend/RigidRegistration.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace dynslam::frontend {
+
+/// One feature seen with depth in the previous frame (p) and in this one (q), each in that
+/// frame's camera coordinates.
+struct PointPair {
+  std::int64_t id = -1;  ///< core::Feature::id
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();
+};
+
+struct RigidPointSetParams {
+  RansacParams ransac;  ///< 4 pairs, 100 iterations, tau = 0.03 m (method.md)
+  int min_members = 5;  ///< fewer inliers than this: no rigid set on the object this frame
+};
+
+/// What the last update did to the membership.
+struct RigidSetUpdate {
+  bool created = false;  ///< a new set (first one, or the old one could not be continued)
+  std::vector<std::int64_t> joined, left;  ///< members admitted / dropped by a continuation
+};
+
+class AdaptiveRigidPointSet {
+ public:
+  explicit AdaptiveRigidPointSet(RigidPointSetParams params = {}, std::uint32_t seed = 1);
+
+  /// One frame of the object: its pairs from the previous frame to this one. Returns true when
+  /// the object has a rigid set after the update (members, motion and virtual centroid valid).
+  bool update(const std::vector<PointPair>& pairs);
+  /// Forgets the set (the object stopped, or left the view).
+  void reset();
+
+  bool exists() const { return !members_.empty(); }
+  const std::vector<std::int64_t>& members() const { return members_; }  ///< ascending ids
+  const RigidMotion& motion() const { return motion_; }  ///< previous frame -> this frame
+  const Eigen::Vector3d& virtualCentroid() const { return virtual_centroid_; }
+  const RigidSetUpdate& lastUpdate() const { return last_; }
+
+  /// The set as the frame carries it.
+  core::RigidSet toRigidSet(int object_id) const;
+
+ private:
+  RigidPointSetParams params_;
+  std::mt19937 rng_;
+  std::vector<std::int64_t> members_;
+  RigidMotion motion_;
+  Eigen::Vector3d virtual_centroid_ = Eigen::Vector3d::Zero();
+  RigidSetUpdate last_;
+};
+
+}  // namespace dynslam::frontend

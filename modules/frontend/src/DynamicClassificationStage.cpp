@@ -1,0 +1,120 @@
+#include "dynslam/frontend/DynamicClassificationStage.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+namespace dynslam::frontend {
+namespace {
+
+const char* statisticName(SpeedStatistic s) {
+  return s == SpeedStatistic::MedianFlow ? "median_flow" : "mean_norm";
+}
+
+template <class T>
+void write(mrpt::config::CConfigFileBase& c, const std::string& s, const std::string& key,
+           const T& value, const std::string& comment) {
+  c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
+          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
+}
+
+}  // namespace
+
+void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                                      const std::string& s) {
+  auto& p = classifier;
+  p.speed_threshold = c.read_double(s, "speed_threshold", p.speed_threshold);
+  p.speed_window = c.read_int(s, "speed_window", p.speed_window);
+  const std::string stat = c.read_string(s, "speed_statistic", statisticName(p.speed_statistic));
+  if (stat == "median_flow")
+    p.speed_statistic = SpeedStatistic::MedianFlow;
+  else if (stat == "mean_norm")
+    p.speed_statistic = SpeedStatistic::MeanNorm;
+  else
+    throw core::ConfigError("[" + s + "] speed_statistic = '" + stat +
+                            "': expected median_flow or mean_norm");
+  p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
+  p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
+  p.rigid.ransac.sample_size = c.read_int(s, "rigid_sample_size", p.rigid.ransac.sample_size);
+  p.rigid.ransac.inlier_threshold =
+      c.read_double(s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold);
+  p.rigid.min_members = c.read_int(s, "rigid_min_members", p.rigid.min_members);
+  p.camera.ransac.iterations = c.read_int(s, "camera_iterations", p.camera.ransac.iterations);
+  p.camera.ransac.inlier_threshold =
+      c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);
+  p.camera.min_inliers = c.read_int(s, "camera_min_inliers", p.camera.min_inliers);
+  p.seed = std::uint32_t(c.read_int(s, "seed", int(p.seed)));
+}
+
+void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                                    const std::string& s) const {
+  const auto& p = classifier;
+  write(c, s, "speed_threshold", p.speed_threshold,
+        "m/s; an object moving faster (scene flow / time) is dynamic (method.md: 0.1)");
+  write(c, s, "speed_window", p.speed_window,
+        "frames the scene flow spans at most (1: frame to frame, the method; see the header)");
+  write(c, s, "speed_statistic", std::string(statisticName(p.speed_statistic)),
+        "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
+  write(c, s, "min_flow_features", p.min_flow_features,
+        "features with flow an object needs for a speed; fewer: last decision kept");
+  write(c, s, "rigid_iterations", p.rigid.ransac.iterations,
+        "RANSAC hypotheses of the rigid point sets (method.md: 100)");
+  write(c, s, "rigid_sample_size", p.rigid.ransac.sample_size,
+        "point pairs per hypothesis (method.md: 4)");
+  write(c, s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold,
+        "m; |R p + t - q| below this joins the rigid set (method.md tau: 0.03)");
+  write(c, s, "rigid_min_members", p.rigid.min_members,
+        "fewer inliers than this: no rigid set on the object this frame");
+  write(c, s, "camera_iterations", p.camera.ransac.iterations,
+        "RANSAC hypotheses of the camera motion from background points");
+  write(c, s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold,
+        "m; inlier threshold of the camera-motion registration");
+  write(c, s, "camera_min_inliers", p.camera.min_inliers,
+        "fewer background inliers: IMU rotation / constant velocity instead");
+  write(c, s, "seed", int(p.seed), "seed of the RANSAC draws (runs are repeatable)");
+}
+
+void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std::string& section) {
+  core::loadOptionsStrict(options_, cfg, section);
+  const auto& p = options_.classifier;
+  auto fail = [&](const std::string& key, const std::string& value, const std::string& rule) {
+    throw core::ConfigError("[" + section + "] " + key + " = " + value + " in " + cfg.source() +
+                            ": " + rule);
+  };
+  if (!(p.speed_threshold >= 0))
+    fail("speed_threshold", std::to_string(p.speed_threshold), "must be >= 0");
+  if (p.speed_window < 1) fail("speed_window", std::to_string(p.speed_window), "must be >= 1");
+  if (p.min_flow_features < 1)
+    fail("min_flow_features", std::to_string(p.min_flow_features), "must be >= 1");
+  if (p.rigid.ransac.iterations < 1)
+    fail("rigid_iterations", std::to_string(p.rigid.ransac.iterations), "must be >= 1");
+  if (p.rigid.ransac.sample_size < 3)
+    fail("rigid_sample_size", std::to_string(p.rigid.ransac.sample_size), "must be >= 3");
+  if (!(p.rigid.ransac.inlier_threshold > 0))
+    fail("rigid_inlier_threshold", std::to_string(p.rigid.ransac.inlier_threshold), "must be > 0");
+  if (p.rigid.min_members < 3)
+    fail("rigid_min_members", std::to_string(p.rigid.min_members), "must be >= 3");
+  if (p.camera.ransac.iterations < 1)
+    fail("camera_iterations", std::to_string(p.camera.ransac.iterations), "must be >= 1");
+  if (!(p.camera.ransac.inlier_threshold > 0))
+    fail("camera_inlier_threshold", std::to_string(p.camera.ransac.inlier_threshold),
+         "must be > 0");
+  if (p.camera.min_inliers < 3)
+    fail("camera_min_inliers", std::to_string(p.camera.min_inliers), "must be >= 3");
+  classifier_ = std::make_unique<DynamicClassifier>(p);
+}
+
+void DynamicClassificationStage::process(core::Frame& frame) { classifier_->process(frame); }
+
+void DynamicClassificationStage::finish() {
+  if (!classifier_) return;
+  const auto& c = classifier_->counts();
+  std::string sources;
+  for (const auto& [source, n] : c.camera_sources)
+    sources += std::string(sources.empty() ? "" : ", ") + toString(source) + " " +
+               std::to_string(n);
+  MRPT_LOG_INFO_STREAM(c.frames << " frames, " << c.features << " features (" << c.object_features
+                                << " on objects), " << c.dynamic_objects
+                                << " dynamic object-frames, " << c.rigid_sets
+                                << " rigid sets; camera motion: " << sources);
+}
+
+}  // namespace dynslam::frontend

@@ -1,0 +1,190 @@
+#include "dynslam/frontend/DynamicClassifier.h"
+
+#include "dynslam/frontend/ObjectMembership.h"
+#include "dynslam/frontend/SceneFlow.h"
+
+#include <algorithm>
+#include <set>
+
+namespace dynslam::frontend {
+namespace {
+
+double median(std::vector<double>& v) {
+  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+/// The object's speed from its features' scene-flow velocities (m/s each).
+double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatistic statistic) {
+  if (statistic == SpeedStatistic::MeanNorm) {
+    double sum = 0;
+    for (const auto& v : velocities) sum += v.norm();
+    return sum / double(velocities.size());
+  }
+  Eigen::Vector3d m;
+  std::vector<double> c(velocities.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (size_t i = 0; i < velocities.size(); ++i) c[i] = velocities[i](axis);
+    m(axis) = median(c);
+  }
+  return m.norm();
+}
+
+}  // namespace
+
+const char* toString(CameraMotionSource source) {
+  switch (source) {
+    case CameraMotionSource::Poses: return "poses";
+    case CameraMotionSource::Registration: return "registration";
+    case CameraMotionSource::ImuRotationConstantVelocity: return "imu_rotation+constant_velocity";
+    case CameraMotionSource::ConstantVelocity: return "constant_velocity";
+  }
+  return "?";
+}
+
+DynamicClassifier::DynamicClassifier(DynamicClassifierParams params)
+    : params_(params), cameraEstimator_(params.camera, params.seed) {}
+
+Eigen::Isometry3d DynamicClassifier::cameraFromPast(std::size_t frame) const {
+  for (const auto& [f, T_o_c] : odometry_)
+    if (f == frame) return odometry_.back().second.inverse() * T_o_c;
+  return Eigen::Isometry3d::Identity();  // not reached: history never outlives odometry_
+}
+
+void DynamicClassifier::process(core::Frame& frame) {
+  ++counts_.frames;
+  const std::size_t now = frame_;
+  const auto regions = objectRegions(frame);
+
+  // 1. Membership and camera-frame points of this frame.
+  struct Current {
+    const ObjectRegion* region = nullptr;
+    bool has_point = false;
+    Eigen::Vector3d P;
+    const Observation* previous = nullptr;  ///< the feature's point in the previous frame
+  };
+  std::vector<Current> cur(frame.features.size());
+  std::vector<Eigen::Vector3d> bgPrev, bgCur;
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    auto& f = frame.features[i];
+    auto& c = cur[i];
+    c.region = regionAt(regions, f.pixel);
+    f.object_id = c.region ? c.region->object_id : -1;
+    f.feature_class = core::FeatureClass::Static;
+    if (!(f.depth > 0)) continue;
+    c.has_point = true;
+    c.P = backProject(f.pixel, f.depth, frame.intrinsics);
+    const auto h = history_.find(f.id);
+    if (h != history_.end() && !h->second.empty() && h->second.back().frame + 1 == now)
+      c.previous = &h->second.back();
+    if (!c.region && c.previous) {
+      bgPrev.push_back(c.previous->P);
+      bgCur.push_back(c.P);
+    }
+  }
+  counts_.features += frame.features.size();
+
+  // 2. The camera's motion since the previous frame, and the chain of poses for the window.
+  if (prevT_) {
+    const auto gyro = gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu,
+                                         frame.T_body_camera);
+    camera_ = cameraEstimator_.estimate(bgPrev, bgCur, gyro, prevPose_, frame.T_world_camera);
+    ++counts_.camera_sources[camera_.source];
+    odometry_.emplace_back(now, odometry_.back().second * camera_.motion.isometry().inverse());
+  } else {
+    camera_ = {};
+    odometry_.emplace_back(now, Eigen::Isometry3d::Identity());
+  }
+  const size_t window = size_t(std::max(1, params_.speed_window));
+  while (!odometry_.empty() && odometry_.front().first + window < now) odometry_.pop_front();
+
+  // 3. Each object's speed from its features' scene flow over the window.
+  std::map<int, std::vector<Eigen::Vector3d>> velocities;
+  std::map<int, const ObjectRegion*> seen;
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    const auto& c = cur[i];
+    if (!c.region) continue;
+    ++counts_.object_features;
+    seen[c.region->object_id] = c.region;
+    if (!c.has_point) continue;
+    const auto h = history_.find(frame.features[i].id);
+    if (h == history_.end()) continue;
+    for (const auto& o : h->second) {  // oldest first: the longest span within the window
+      if (o.frame + window < now || o.frame >= now || !(frame.t > o.t)) continue;
+      const Eigen::Vector3d F = sceneFlow(o.P, c.P, cameraFromPast(o.frame));
+      velocities[c.region->object_id].push_back(F / (frame.t - o.t));
+      break;
+    }
+  }
+  std::map<int, bool> dynamic;
+  for (const auto& [id, region] : seen) {
+    core::ObjectMotionState s;
+    s.object_id = id;
+    const auto v = velocities.find(id);
+    s.features = v == velocities.end() ? 0 : int(v->second.size());
+    if (s.features >= std::max(1, params_.min_flow_features)) {
+      s.speed = objectSpeed(v->second, params_.speed_statistic);
+      s.dynamic = s.speed > params_.speed_threshold;
+    } else {
+      const auto last = lastDynamic_.find(id);
+      s.dynamic = last == lastDynamic_.end() ? true : last->second;
+    }
+    lastDynamic_[id] = s.dynamic;
+    dynamic[id] = s.dynamic;
+    counts_.dynamic_objects += s.dynamic;
+    frame.object_motions.push_back(s);
+  }
+
+  // 4. Rigid point sets of the dynamic objects, from the frame-to-frame pairs.
+  std::map<int, std::vector<PointPair>> pairs;
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    const auto& c = cur[i];
+    if (c.region && c.previous && dynamic[c.region->object_id])
+      pairs[c.region->object_id].push_back({frame.features[i].id, c.previous->P, c.P});
+  }
+  for (auto it = sets_.begin(); it != sets_.end();)
+    it = (seen.count(it->first) && dynamic[it->first]) ? std::next(it) : sets_.erase(it);
+  std::map<int, std::set<std::int64_t>> members, tested;
+  for (const auto& [id, objectPairs] : pairs) {
+    auto set = sets_.try_emplace(id, params_.rigid, params_.seed + std::uint32_t(id)).first;
+    if (!set->second.update(objectPairs)) continue;
+    frame.rigid_sets.push_back(set->second.toRigidSet(id));
+    ++counts_.rigid_sets;
+    members[id].insert(set->second.members().begin(), set->second.members().end());
+    for (const auto& p : objectPairs) tested[id].insert(p.id);
+  }
+
+  // 5. Classes.
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    auto& f = frame.features[i];
+    const auto* region = cur[i].region;
+    if (!region || !dynamic[region->object_id]) continue;  // Static
+    const bool member = members[region->object_id].count(f.id) > 0;
+    if (region->model == core::MotionModel::Rigid) {
+      const bool rejected = tested[region->object_id].count(f.id) > 0 && !member;
+      f.feature_class = rejected ? core::FeatureClass::NonRigid : core::FeatureClass::Rigid;
+    } else {
+      f.feature_class = member ? core::FeatureClass::Rigid : core::FeatureClass::NonRigid;
+    }
+  }
+
+  // 6. Remember this frame's points; forget features no longer tracked.
+  std::unordered_map<std::int64_t, std::deque<Observation>> next;
+  next.reserve(frame.features.size());
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    if (!cur[i].has_point) continue;
+    auto h = history_.find(frame.features[i].id);
+    std::deque<Observation> d;
+    if (h != history_.end()) d = std::move(h->second);
+    while (!d.empty() && d.front().frame + window <= now) d.pop_front();
+    d.push_back({now, frame.t, cur[i].P});
+    next.emplace(frame.features[i].id, std::move(d));
+  }
+  history_ = std::move(next);
+  prevT_ = frame.t;
+  prevPose_ = frame.T_world_camera;
+  ++frame_;
+}
+
+}  // namespace dynslam::frontend

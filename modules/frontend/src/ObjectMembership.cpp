@@ -1,0 +1,34 @@
+#include "dynslam/frontend/ObjectMembership.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dynslam::frontend {
+
+std::vector<ObjectRegion> objectRegions(const core::Frame& frame) {
+  std::vector<ObjectRegion> regions;
+  for (const auto& m : frame.object_masks) {
+    if (!m.valid || m.mask.empty()) continue;
+    int track = m.track;
+    if (track < 0 && m.detection >= 0)
+      for (size_t i = 0; i < frame.tracks.size(); ++i)
+        if (frame.tracks[i].detection == m.detection) track = int(i);
+    if (track < 0 || size_t(track) >= frame.tracks.size()) continue;
+    const auto& tr = frame.tracks[size_t(track)];
+    regions.push_back({tr.id, tr.model, m.roi, m.mask, m.d_t});
+  }
+  std::stable_sort(regions.begin(), regions.end(),
+                   [](const ObjectRegion& a, const ObjectRegion& b) { return a.depth < b.depth; });
+  return regions;
+}
+
+const ObjectRegion* regionAt(const std::vector<ObjectRegion>& regions, const cv::Point2f& pixel) {
+  const int x = int(std::lround(pixel.x)), y = int(std::lround(pixel.y));
+  for (const auto& r : regions) {
+    if (!r.roi.contains({x, y})) continue;
+    if (r.mask.at<uint8_t>(y - r.roi.y, x - r.roi.x) != 0) return &r;
+  }
+  return nullptr;
+}
+
+}  // namespace dynslam::frontend

@@ -1,0 +1,81 @@
+#include "dynslam/frontend/RigidPointSet.h"
+
+#include <algorithm>
+
+namespace dynslam::frontend {
+namespace {
+
+std::vector<std::int64_t> idsOf(const std::vector<PointPair>& pairs, const std::vector<int>& in) {
+  std::vector<std::int64_t> ids;
+  ids.reserve(in.size());
+  for (int i : in) ids.push_back(pairs[size_t(i)].id);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+}  // namespace
+
+AdaptiveRigidPointSet::AdaptiveRigidPointSet(RigidPointSetParams params, std::uint32_t seed)
+    : params_(params), rng_(seed) {}
+
+void AdaptiveRigidPointSet::reset() {
+  members_.clear();
+  motion_ = {};
+  virtual_centroid_.setZero();
+}
+
+bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
+  last_ = {};
+  std::vector<Eigen::Vector3d> p, q;
+  p.reserve(pairs.size());
+  q.reserve(pairs.size());
+  std::vector<int> stillTracked;  // pairs of current members
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    p.push_back(pairs[i].p);
+    q.push_back(pairs[i].q);
+    if (std::binary_search(members_.begin(), members_.end(), pairs[i].id))
+      stillTracked.push_back(int(i));
+  }
+  const auto minMembers = size_t(std::max(3, params_.min_members));
+
+  // Continuation: hypotheses from the surviving members, plus the last motion (an object
+  // moves smoothly from one frame to the next), inliers over all pairs.
+  if (exists() && int(stillTracked.size()) >= params_.ransac.sample_size) {
+    const auto r = registerRansac(p, q, params_.ransac, rng_, stillTracked, {motion_});
+    if (r && r->inliers.size() >= minMembers) {
+      std::vector<std::int64_t> ids = idsOf(pairs, r->inliers);
+      std::set_difference(ids.begin(), ids.end(), members_.begin(), members_.end(),
+                          std::back_inserter(last_.joined));
+      std::set_difference(members_.begin(), members_.end(), ids.begin(), ids.end(),
+                          std::back_inserter(last_.left));
+      members_ = std::move(ids);
+      motion_ = r->motion;
+      virtual_centroid_ = motion_.apply(virtual_centroid_);
+      return true;
+    }
+  }
+
+  // Creation: the largest rigid group among all the object's pairs.
+  reset();
+  const auto r = registerRansac(p, q, params_.ransac, rng_);
+  if (!r || r->inliers.size() < minMembers) return false;
+  members_ = idsOf(pairs, r->inliers);
+  motion_ = r->motion;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int i : r->inliers) c += q[size_t(i)];
+  virtual_centroid_ = c / double(r->inliers.size());
+  last_.created = true;
+  return true;
+}
+
+core::RigidSet AdaptiveRigidPointSet::toRigidSet(int object_id) const {
+  core::RigidSet s;
+  s.object_id = object_id;
+  s.members = members_;
+  s.R = motion_.R;
+  s.t = motion_.t;
+  s.virtual_centroid = virtual_centroid_;
+  return s;
+}
+
+}  // namespace dynslam::frontend

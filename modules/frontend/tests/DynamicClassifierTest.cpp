@@ -1,0 +1,228 @@
+// Contract of the classification (method.md section 3) on a synthetic scene seen by a camera
+// that moves and turns (IMU gyro given): a walking person's features are dynamic and on a rigid
+// set that moves like the person; a standing person's and a parked car's features are Static
+// (members of the dynamic classes that do not move); a driving car's features are Rigid; the
+// background is Static; features take the id of the track whose mask holds them. Also the
+// stage's ini contract.
+#include <dynslam/core/Config.h>
+#include <dynslam/frontend/DynamicClassificationStage.h>
+#include <dynslam/frontend/DynamicClassifier.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include <map>
+#include <random>
+
+namespace dynslam::frontend {
+namespace {
+
+const core::CameraIntrinsics kCamera{500, 500, 320, 240, 640, 480};
+constexpr double kDt = 1.0 / 30;
+constexpr double kYawRate = 0.3;  // rad/s, the camera turns about its y axis
+
+struct Object {
+  int track_id;
+  core::MotionModel model;
+  Eigen::Vector3d velocity;  // m/s, world
+  std::vector<Eigen::Vector3d> points;  // world, at t = 0
+};
+
+/// Camera = world axes at t = 0, moving along x at 0.3 m/s and turning at kYawRate; gyro and
+/// camera axes coincide (identity extrinsics).
+Eigen::Isometry3d cameraPose(double t) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(kYawRate * t, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  T.translation() = Eigen::Vector3d(0.3 * t, 0, 0);
+  return T;
+}
+
+struct Scene {
+  std::vector<Eigen::Vector3d> background;
+  std::vector<Object> objects;
+
+  Scene() {
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 150; ++i) background.emplace_back(4 * u(rng), 2 * u(rng), 6 + u(rng));
+    auto box = [&](Eigen::Vector3d c, Eigen::Vector3d half, int n) {
+      std::vector<Eigen::Vector3d> pts;
+      for (int i = 0; i < n; ++i)
+        pts.push_back(c + Eigen::Vector3d(half.x() * u(rng), half.y() * u(rng), half.z() * u(rng)));
+      return pts;
+    };
+    objects.push_back({1, core::MotionModel::NonRigid, {0.8, 0, 0.3},  // walking person
+                       box({-1.2, 0, 3.0}, {0.2, 0.5, 0.1}, 25)});
+    objects.push_back({2, core::MotionModel::NonRigid, {0, 0, 0},  // standing person
+                       box({0.9, 0, 3.5}, {0.2, 0.5, 0.1}, 25)});
+    objects.push_back({3, core::MotionModel::Rigid, {0, 0, 0},  // parked car
+                       box({-0.3, 0.8, 4.5}, {0.6, 0.25, 0.3}, 25)});
+    objects.push_back({4, core::MotionModel::Rigid, {0, 0, -1.5},  // driving car
+                       box({2.2, 0.5, 5.0}, {0.5, 0.3, 0.3}, 25)});
+  }
+
+  /// Frame k with features (ids: background i, object j point i -> 1000 (j + 1) + i), one mask
+  /// per object (its features' bounding box, slightly grown), one track per object.
+  core::Frame frame(int k) const {
+    core::Frame f;
+    f.index = size_t(k);
+    f.t = k * kDt;
+    f.intrinsics = kCamera;
+    for (int s = 1; s <= 7; ++s) {
+      core::ImuSample imu;
+      imu.t = f.t - kDt + s * kDt / 7;
+      imu.gyro = Eigen::Vector3d(0, kYawRate, 0);
+      imu.has_gyro = true;
+      f.imu.push_back(imu);
+    }
+    const Eigen::Isometry3d T_c_w = cameraPose(f.t).inverse();
+    auto project = [&](const Eigen::Vector3d& X, std::int64_t id) -> std::optional<cv::Point2f> {
+      const Eigen::Vector3d P = T_c_w * X;
+      const cv::Point2f px(float(kCamera.fx * P.x() / P.z() + kCamera.cx),
+                           float(kCamera.fy * P.y() / P.z() + kCamera.cy));
+      if (P.z() < 0.5 || px.x < 0 || px.y < 0 || px.x > 639 || px.y > 479) return std::nullopt;
+      core::Feature feat;
+      feat.id = id;
+      feat.pixel = px;
+      feat.depth = float(P.z());
+      f.features.push_back(feat);
+      return px;
+    };
+    std::vector<cv::Rect> boxes;
+    for (size_t j = 0; j < objects.size(); ++j) {
+      const auto& o = objects[j];
+      std::vector<cv::Point2f> px;
+      for (size_t i = 0; i < o.points.size(); ++i)
+        if (auto p = project(o.points[i] + o.velocity * f.t, 1000 * std::int64_t(j + 1) + i))
+          px.push_back(*p);
+      cv::Rect box = cv::boundingRect(px);
+      box = cv::Rect(box.x - 3, box.y - 3, box.width + 6, box.height + 6) &
+            cv::Rect(0, 0, 640, 480);
+      boxes.push_back(box);
+      core::Track track;
+      track.id = o.track_id;
+      track.model = o.model;
+      track.state = core::TrackState::Confirmed;
+      f.tracks.push_back(track);
+      core::ObjectMask m;
+      m.track = int(j);
+      m.roi = box;
+      m.mask = cv::Mat(box.size(), CV_8UC1, cv::Scalar(255));
+      m.d_t = (T_c_w * (o.points[0] + o.velocity * f.t)).z();
+      m.valid = true;
+      f.object_masks.push_back(m);
+    }
+    // Background features hidden by (or inside the box of) an object are not seen.
+    for (size_t i = 0; i < background.size(); ++i) {
+      const Eigen::Vector3d P = T_c_w * background[i];
+      const cv::Point2f px(float(kCamera.fx * P.x() / P.z() + kCamera.cx),
+                           float(kCamera.fy * P.y() / P.z() + kCamera.cy));
+      bool hidden = false;
+      for (const auto& b : boxes) hidden |= b.contains(cv::Point(int(px.x + 0.5f), int(px.y + 0.5f)));
+      if (!hidden) project(background[i], std::int64_t(i));
+    }
+    return f;
+  }
+};
+
+TEST(DynamicClassifier, ClassifiesMoversAndNonMovers) {
+  const Scene scene;
+  DynamicClassifier classifier;  // defaults: 0.1 m/s, window 10, method's RANSAC
+  std::map<int, core::ObjectMotionState> last;
+  core::Frame f;
+  const int frames = 15;
+  for (int k = 0; k < frames; ++k) {
+    f = scene.frame(k);
+    classifier.process(f);
+    if (k == 0) continue;
+    EXPECT_EQ(classifier.lastCameraMotion().source, CameraMotionSource::Registration);
+    const Eigen::Isometry3d truth = cameraPose(f.t).inverse() * cameraPose(f.t - kDt);
+    EXPECT_LT((classifier.lastCameraMotion().motion.isometry().matrix() - truth.matrix()).norm(),
+              1e-6)
+        << "frame " << k;
+  }
+  for (const auto& s : f.object_motions) last[s.object_id] = s;
+  ASSERT_EQ(last.size(), 4u);
+  EXPECT_TRUE(last[1].dynamic);
+  EXPECT_NEAR(last[1].speed, Eigen::Vector3d(0.8, 0, 0.3).norm(), 1e-6);
+  EXPECT_FALSE(last[2].dynamic);
+  EXPECT_LT(last[2].speed, 1e-6);
+  EXPECT_FALSE(last[3].dynamic);
+  EXPECT_TRUE(last[4].dynamic);
+  EXPECT_NEAR(last[4].speed, 1.5, 1e-6);
+
+  std::map<int, std::map<core::FeatureClass, int>> classes;
+  for (const auto& feat : f.features) {
+    const int expectedObject = feat.id < 1000 ? -1 : scene.objects[size_t(feat.id / 1000 - 1)].track_id;
+    EXPECT_EQ(feat.object_id, expectedObject) << "feature " << feat.id;
+    ++classes[feat.object_id][feat.feature_class];
+  }
+  using C = core::FeatureClass;
+  EXPECT_EQ(classes[-1].size(), 1u);
+  EXPECT_GT(classes[-1][C::Static], 50);
+  EXPECT_EQ(classes[1][C::Rigid], 25);  // one rigid body: every feature is in the set
+  EXPECT_EQ(classes[2][C::Static], 25);
+  EXPECT_EQ(classes[3][C::Static], 25);
+  EXPECT_EQ(classes[4][C::Rigid], 25);
+
+  // Rigid sets of the two movers, with the camera-frame motion of their points.
+  ASSERT_EQ(f.rigid_sets.size(), 2u);
+  const Eigen::Isometry3d T_c1_w = cameraPose(f.t).inverse(), T_w_c0 = cameraPose(f.t - kDt);
+  for (const auto& s : f.rigid_sets) {
+    const auto& o = scene.objects[s.object_id == 1 ? 0 : 3];
+    EXPECT_EQ(s.members.size(), 25u);
+    const Eigen::Vector3d X0 = o.points[0] + o.velocity * (f.t - kDt);
+    const Eigen::Vector3d p = T_w_c0.inverse() * X0, q = T_c1_w * (X0 + o.velocity * kDt);
+    EXPECT_LT((s.R * p + s.t - q).norm(), 1e-6) << "object " << s.object_id;
+  }
+}
+
+TEST(DynamicClassifier, TheMethodsFrameToFrameSettingsAgreeOnCleanData) {
+  const Scene scene;
+  DynamicClassifierParams params;
+  params.speed_window = 1;
+  params.speed_statistic = SpeedStatistic::MeanNorm;
+  DynamicClassifier classifier(params);
+  core::Frame f;
+  for (int k = 0; k < 3; ++k) {
+    f = scene.frame(k);
+    classifier.process(f);
+  }
+  std::map<int, bool> dynamic;
+  for (const auto& s : f.object_motions) dynamic[s.object_id] = s.dynamic;
+  EXPECT_TRUE(dynamic[1]);
+  EXPECT_FALSE(dynamic[2]);
+  EXPECT_FALSE(dynamic[3]);
+  EXPECT_TRUE(dynamic[4]);
+}
+
+TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
+  DynamicClassificationStage stage;
+  stage.configure(core::IniConfig::fromText("[DynamicClassification]\nspeed_threshold = 0.2\n"
+                                            "speed_statistic = mean_norm\nrigid_inlier_threshold = 0.05\n"),
+                  "DynamicClassification");
+  EXPECT_EQ(stage.options().classifier.speed_threshold, 0.2);
+  EXPECT_EQ(stage.options().classifier.speed_statistic, SpeedStatistic::MeanNorm);
+  EXPECT_EQ(stage.options().classifier.rigid.ransac.inlier_threshold, 0.05);
+  EXPECT_EQ(stage.options().classifier.rigid.ransac.iterations, 100);  // the method's default
+
+  auto configure = [](const std::string& text) {
+    DynamicClassificationStage s;
+    s.configure(core::IniConfig::fromText("[DynamicClassification]\n" + text), "DynamicClassification");
+  };
+  auto messageOf = [&](const std::string& text) {
+    try {
+      configure(text);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(messageOf("speed_treshold = 0.1\n").find("speed_treshold"), std::string::npos);
+  EXPECT_NE(messageOf("speed_window = 0\n").find("speed_window"), std::string::npos);
+  EXPECT_NE(messageOf("speed_statistic = mean\n").find("speed_statistic"), std::string::npos);
+  EXPECT_NE(messageOf("rigid_sample_size = 2\n").find("rigid_sample_size"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dynslam::frontend
