@@ -233,3 +233,23 @@ TEST(Runner, FramesOptionWritesAnAnnotatedPngPerFrame) {
     EXPECT_EQ(img.size(), cv::Size(320, 240)) << png;
   }
 }
+
+TEST(Runner, RealtimePlaysAtCameraRateAndReportsTheDetectorThreadsRate) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 15);  // 0.47 s of stream at 30 Hz
+  const auto ini = writeTextFile(
+      dir + "/rt.ini",
+      "[pipeline]\nstages = Detection, Segmentation, Tracking, Segmentation:PredictedBoxes\n"
+      "[Detection]\ndetector = hog\nmode = realtime\n[PredictedBoxes]\nboxes = predicted_tracks\n");
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " +
+                                           dir + "/out --realtime"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string summary = readTextFile(dir + "/out/summary.json");
+  EXPECT_NE(summary.find("\"realtime\": {"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"camera_interval_ms\": 33.3"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"detector_hz\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"name\": \"PredictedBoxes\""), std::string::npos) << summary;
+  const auto wall = summary.find("\"wall_time_s\": ");
+  ASSERT_NE(wall, std::string::npos);
+  EXPECT_GE(std::stod(summary.substr(wall + 15)), 14 / 30.0) << "paced at the stamps' rate";
+}

@@ -23,6 +23,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -47,6 +48,34 @@ struct RunRecord {
   size_t frames = 0, poses = 0, imu_samples = 0, gnss_fixes = 0;
   double wall_s = 0.0;
   bool estimator = false;
+  std::vector<double> lag_ms;  ///< --realtime: how late each frame reached the pipeline
+  std::vector<double> dt_ms;   ///< --realtime: stamp differences between frames
+};
+
+/// --realtime: hands frames over on the schedule their stamps give, and records the lag.
+class CameraRateClock {
+ public:
+  void waitFor(double stamp, RunRecord& rec) {
+    using Clock = std::chrono::steady_clock;
+    if (!started_) {
+      start_ = Clock::now();
+      first_ = stamp;
+      started_ = true;
+    } else {
+      rec.dt_ms.push_back(1000.0 * (stamp - last_));
+    }
+    last_ = stamp;
+    const auto due =
+        start_ + std::chrono::duration_cast<Clock::duration>(
+                     std::chrono::duration<double>(std::max(0.0, stamp - first_)));
+    std::this_thread::sleep_until(due);
+    rec.lag_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - due).count());
+  }
+
+ private:
+  bool started_ = false;
+  double first_ = 0, last_ = 0;
+  std::chrono::steady_clock::time_point start_;
 };
 
 void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
@@ -65,6 +94,19 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   j.member("imu_samples", rec.imu_samples).member("gnss_fixes", rec.gnss_fixes);
   j.member("wall_time_s", rec.wall_s);
   j.member("fps", rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
+  if (args.realtime) {
+    // A frame is late when it reached the pipeline more than one camera interval after its
+    // stamp's due time: the stages (not counting the detector thread) fell behind the camera.
+    const double interval = median(rec.dt_ms);
+    const auto late = std::count_if(rec.lag_ms.begin(), rec.lag_ms.end(),
+                                    [&](double l) { return l > interval; });
+    j.key("realtime").beginObject();
+    j.member("camera_interval_ms", interval).member("lag_median_ms", median(rec.lag_ms));
+    j.member("lag_max_ms",
+             rec.lag_ms.empty() ? 0.0 : *std::max_element(rec.lag_ms.begin(), rec.lag_ms.end()));
+    j.member("frames_late", static_cast<size_t>(late));
+    j.endObject();
+  }
   if (sync) {
     const auto& c = sync->counts();
     j.key("observations").beginObject();
@@ -76,11 +118,20 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
     j.endObject().endObject();
   }
   j.key("stages").beginArray();
-  if (pipeline)
-    for (const auto& t : pipeline->times()) {
+  if (pipeline) {
+    const auto stats = pipeline->statistics();
+    for (size_t i = 0; i < pipeline->times().size(); ++i) {
+      const auto& t = pipeline->times()[i];
       j.beginObject().member("name", t.name).member("median_ms", median(t.ms));
-      j.member("frames", t.ms.size()).endObject();
+      j.member("frames", t.ms.size());
+      if (!stats[i].empty()) {
+        j.key("statistics").beginObject();
+        for (const auto& [name, value] : stats[i]) j.member(name, value);
+        j.endObject();
+      }
+      j.endObject();
     }
+  }
   j.endArray();
   j.endObject();
 }
@@ -139,6 +190,7 @@ int runDynslam(const RunnerArgs& args) {
     core::ProgressReporter progress(stderr, !args.quiet && isatty(STDERR_FILENO) != 0);
     std::signal(SIGINT, onInterrupt);
     std::vector<core::Frame> ready;
+    CameraRateClock cameraRate;
     bool more = true;
     while (more && !g_interrupted) {
       const auto obs = source.next();
@@ -153,6 +205,7 @@ int runDynslam(const RunnerArgs& args) {
           more = false;
           break;
         }
+        if (args.realtime) cameraRate.waitFor(frame.t, rec);
         pipeline->process(frame);
         if (!args.frames_dir.empty()) writeAnnotatedFrame(args.frames_dir, frame);
         ++rec.frames;

@@ -14,6 +14,10 @@ struct RunnerArgs {
   long max_frames = -1;                ///< stop after this many frames (-1: all)
   bool quiet = false;                  ///< no progress output
   std::string frames_dir;  ///< non-empty: an annotated PNG per frame there (viz::AnnotatedFrame)
+  /// Play the rawlog at camera rate (each frame handed to the pipeline no earlier than its
+  /// stamp says, relative to the first), as a live camera would; the lag behind that schedule
+  /// goes into summary.json. Off: as fast as the stages go.
+  bool realtime = false;
 };
 
 /// Runs the whole job. Returns the process exit code: 0 on success, 1 when the input or the

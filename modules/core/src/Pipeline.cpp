@@ -63,6 +63,12 @@ std::vector<std::string> Pipeline::sectionsUsed() const {
   return s;
 }
 
+std::vector<std::vector<std::pair<std::string, double>>> Pipeline::statistics() const {
+  std::vector<std::vector<std::pair<std::string, double>>> all;
+  for (const auto& s : stages_) all.push_back(s->statistics());
+  return all;
+}
+
 bool Pipeline::estimatesPose() const {
   for (const auto& s : stages_)
     if (s->estimatesPose()) return true;

@@ -80,21 +80,29 @@ void DetectionStage::process(core::Frame& frame) {
 }
 
 void DetectionStage::finish() {
+  statistics_ = {{"frames", double(frames_)}, {"fresh_frames", double(fresh_frames_)}};
   if (realtime_) {
     const std::size_t runs = realtime_->completed(), dropped = realtime_->dropped();
     realtime_.reset();  // joins the thread; a result still under way is dropped
     const double span = last_t_ - first_t_;
+    const double hz = span > 0 ? runs / span : 0.0;
+    const double ms = fresh_frames_ ? 1000.0 * realtime_detector_seconds_ / fresh_frames_ : 0.0;
+    statistics_.insert(statistics_.end(), {{"detector_runs", double(runs)},
+                                           {"detector_hz", hz},
+                                           {"detector_ms", ms},
+                                           {"superseded", double(dropped)}});
     MRPT_LOG_INFO_STREAM("real-time detection: "
                          << fresh_frames_ << " of " << frames_ << " frames got fresh "
-                         << "detections; detector ran " << runs << " times ("
-                         << (span > 0 ? runs / span : 0.0) << " per second of stream), "
-                         << (fresh_frames_ ? 1000.0 * realtime_detector_seconds_ / fresh_frames_
-                                           : 0.0)
-                         << " ms per run; " << dropped
+                         << "detections; detector ran " << runs << " times (" << hz
+                         << " per second of stream), " << ms << " ms per run; " << dropped
                          << " results superseded before a frame took them");
   } else {
     MRPT_LOG_INFO_STREAM(fresh_frames_ << " frames detected inline");
   }
+}
+
+std::vector<std::pair<std::string, double>> DetectionStage::statistics() const {
+  return statistics_;
 }
 
 }  // namespace dynslam::detection

@@ -25,6 +25,15 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   else
     throw std::invalid_argument("object_cluster = '" + cluster +
                                 "': expected far (the method) or larger");
+  const std::string which = c.read_string(
+      s, "boxes", boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks");
+  if (which == "detections")
+    boxes = SegmentedBoxes::Detections;
+  else if (which == "predicted_tracks")
+    boxes = SegmentedBoxes::PredictedTracks;
+  else
+    throw std::invalid_argument("boxes = '" + which +
+                                "': expected detections or predicted_tracks");
 }
 
 void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -45,6 +54,10 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   write("object_cluster", std::string(p.object_cluster == ObjectCluster::Far ? "far" : "larger"),
         "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
         "samples (a variant, not the method)");
+  write("boxes",
+        std::string(boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks"),
+        "detections: the detector's boxes; predicted_tracks: confirmed tracks' predicted boxes on "
+        "frames without fresh detections (real time; list the stage again after Tracking)");
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
@@ -56,11 +69,39 @@ void SegmentationStage::configure(const core::IniConfig& cfg, const std::string&
   }
 }
 
-void SegmentationStage::process(core::Frame& frame) {
-  if (frame.depth.empty() && !frame.detections.empty())
+void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
+  std::vector<core::Detection> boxes;
+  std::vector<int> trackOf;
+  for (size_t i = 0; i < frame.tracks.size(); ++i) {
+    const auto& t = frame.tracks[i];
+    if (t.state != core::TrackState::Confirmed) continue;
+    core::Detection box;
+    box.box = t.box;
+    box.category = t.category;
+    box.model = t.model;
+    boxes.push_back(box);
+    trackOf.push_back(int(i));
+  }
+  if (frame.depth.empty() && !boxes.empty())
     throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
-                             " has detections but no depth image");
-  frame.object_masks = segmenter_.segment(frame.depth, frame.detections);
+                             " has predicted boxes but no depth image");
+  frame.object_masks = segmenter_.segment(frame.depth, boxes);
+  for (size_t k = 0; k < frame.object_masks.size(); ++k) {
+    frame.object_masks[k].detection = -1;
+    frame.object_masks[k].track = trackOf[k];
+  }
+}
+
+void SegmentationStage::process(core::Frame& frame) {
+  if (options_.boxes == SegmentedBoxes::PredictedTracks) {
+    if (frame.detections_fresh) return;  // the detections' masks are already there
+    segmentPredictedTracks(frame);
+  } else {
+    if (frame.depth.empty() && !frame.detections.empty())
+      throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
+                               " has detections but no depth image");
+    frame.object_masks = segmenter_.segment(frame.depth, frame.detections);
+  }
   ++frames_;
   for (const auto& m : frame.object_masks) {
     ++masks_;

@@ -112,6 +112,12 @@ void TrackingStage::process(core::Frame& frame) {
     tracker_.update(observations, image);
   }
   frame.tracks = tracker_.tracks();
+  // Link each detection's mask to the track that took the detection, for later stages.
+  for (auto& mask : frame.object_masks) {
+    mask.track = -1;
+    for (size_t i = 0; i < frame.tracks.size(); ++i)
+      if (mask.detection >= 0 && frame.tracks[i].detection == mask.detection) mask.track = int(i);
+  }
 }
 
 void TrackingStage::finish() {

@@ -43,6 +43,8 @@ class Pipeline {
   bool estimatesPose() const;
   bool empty() const { return stages_.empty(); }
   const std::vector<StageTimes>& times() const { return times_; }
+  /// Stage::statistics() of each stage, in the order of times().
+  std::vector<std::vector<std::pair<std::string, double>>> statistics() const;
 
  private:
   std::vector<std::unique_ptr<Stage>> stages_;

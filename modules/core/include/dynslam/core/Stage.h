@@ -8,6 +8,8 @@
 #include <mrpt/system/COutputLogger.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace dynslam::core {
 
@@ -27,6 +29,10 @@ class Stage : public mrpt::system::COutputLogger {
 
   /// True for stages that set Frame::T_world_camera (estimators and odometries).
   virtual bool estimatesPose() const { return false; }
+
+  /// Figures the stage measured over the run (name, value), valid after finish(); the runner
+  /// writes them into summary.json beside the stage's timings.
+  virtual std::vector<std::pair<std::string, double>> statistics() const { return {}; }
 };
 
 }  // namespace dynslam::core

@@ -27,6 +27,10 @@ class DetectionStage : public core::Stage {
   void configure(const core::IniConfig& cfg, const std::string& section) override;
   void process(core::Frame& frame) override;
   void finish() override;
+  /// fresh_frames, frames; in real-time mode also detector_runs, detector_hz (runs per second
+  /// of stream time: the detector thread's rate when the stream is played at camera rate),
+  /// detector_ms (mean per run) and superseded (results a newer one replaced).
+  std::vector<std::pair<std::string, double>> statistics() const override;
 
   const DetectionOptions& options() const { return options_; }
   std::size_t frames() const { return frames_; }
@@ -46,6 +50,7 @@ class DetectionStage : public core::Stage {
   std::vector<std::size_t> source_frames_;
   double realtime_detector_seconds_ = 0;
   double first_t_ = 0, last_t_ = 0;
+  std::vector<std::pair<std::string, double>> statistics_;  // filled by finish()
 };
 
 }  // namespace dynslam::detection

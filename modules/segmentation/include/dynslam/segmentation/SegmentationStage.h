@@ -1,8 +1,16 @@
 #pragma once
-// The pipeline stage of depth-threshold instance segmentation (method.md section 1): one
-// core::ObjectMask per core::Detection of the frame, in the same order, into
-// Frame::object_masks. Runs after a detector stage; reads Frame::depth and
-// Frame::detections. Ini section: [Segmentation] (keys in SegmentationOptions).
+// The pipeline stage of depth-threshold instance segmentation (method.md section 1). Ini
+// section: [Segmentation] (keys in SegmentationOptions). Two uses, chosen by `boxes`:
+//  - detections (default): one core::ObjectMask per core::Detection of the frame, in the same
+//    order, into Frame::object_masks. Runs after a detector stage, before tracking (the tracker
+//    takes each detection's depth d_t from its mask).
+//  - predicted_tracks: real-time mode's stand-in for detections (method.md section 2: "predicted
+//    boxes also serve frames in which the detector gave no result"). Runs after the tracking
+//    stage; on a frame without fresh detections it segments the predicted box of every
+//    confirmed track, mask.detection = -1 and mask.track = the track's index; on frames with
+//    fresh detections it does nothing. A real-time pipeline therefore lists the class twice:
+//      stages = Detection, Segmentation, Tracking, Segmentation:PredictedBoxes
+//    with [PredictedBoxes] boxes = predicted_tracks.
 #include <dynslam/core/Stage.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 
@@ -12,8 +20,12 @@
 
 namespace dynslam::segmentation {
 
+/// Which boxes the stage segments (see the file comment).
+enum class SegmentedBoxes { Detections, PredictedTracks };
+
 struct SegmentationOptions : mrpt::config::CLoadableOptions {
   DepthThresholdParams params;
+  SegmentedBoxes boxes = SegmentedBoxes::Detections;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -31,6 +43,8 @@ class SegmentationStage : public core::Stage {
   SegmentationOptions options_;
   DepthThresholdSegmenter segmenter_;
   size_t frames_ = 0, masks_ = 0, invalid_ = 0;
+
+  void segmentPredictedTracks(core::Frame& frame) const;
 };
 
 }  // namespace dynslam::segmentation

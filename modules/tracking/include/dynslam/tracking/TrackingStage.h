@@ -2,7 +2,8 @@
 // The tracking stage (method.md section 2; ini section [Tracking]): runs a KalmanBoxTracker on
 // the frame's detections and writes frame.tracks. The depth of each detection is the
 // segmentation's d_t when an earlier stage wrote object_masks, else the median depth of the
-// box's central half (ObjectDepth.h).
+// box's central half (ObjectDepth.h). Each mask's ObjectMask::track is set to the index of the
+// track its detection was matched to (-1: none), so later stages know which object a mask is.
 //
 // Real-time mode: on a frame whose detections are not fresh (frame.detections_fresh == false:
 // the detector thread was busy) the tracks only predict to the frame's time, and frame.tracks
