@@ -42,7 +42,8 @@ SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Sequenc
       dir_(outDir),
       start_time_(sequence.startTime()),
       rawlog_((fs::create_directories(outDir), (fs::path(outDir) / "sim.rawlog").string())),
-      images_(ImageStorage::External, (fs::path(outDir) / "sim_Images").string()) {
+      images_(ImageStorage::External, (fs::path(outDir) / "sim_Images").string()),
+      T_body_imu_(sequence.T_body_imu()) {
   fs::create_directories(fs::path(dir_) / "labels");
   groundtruth_ = openText(fs::path(dir_) / "groundtruth.tum",
                           "# camera (optical frame) pose in the world: t tx ty tz qx qy qz qw\n");
@@ -55,9 +56,12 @@ void SimulationWriter::writeSamplesUpTo(double t) {
   const auto& imu = sim_.imu();
   for (; next_imu_ < imu.size() && imu[next_imu_].t <= t; ++next_imu_) {
     const auto& m = imu[next_imu_];
-    rawlog_.write(*makeImuObservation(mrpt::Clock::fromDouble(stamp(m.t)), kImuLabel,
-                                      std::array<double, 3>{m.gyro.x(), m.gyro.y(), m.gyro.z()},
-                                      std::array<double, 3>{m.acc.x(), m.acc.y(), m.acc.z()}));
+    const auto obs =
+        makeImuObservation(mrpt::Clock::fromDouble(stamp(m.t)), kImuLabel,
+                           std::array<double, 3>{m.gyro.x(), m.gyro.y(), m.gyro.z()},
+                           std::array<double, 3>{m.acc.x(), m.acc.y(), m.acc.z()});
+    setImuPoseOnBody(*obs, T_body_imu_);
+    rawlog_.write(*obs);
     biases_ << stamp(m.t) << ' ' << m.gyro_bias.transpose() << ' ' << m.acc_bias.transpose()
             << '\n';
   }
@@ -82,7 +86,9 @@ void SimulationWriter::write(const sim::SimFrame& frame) {
   rgbd.intrinsics = {k.fx, k.fy, k.cx, k.cy};
   rgbd.colour = images_.storePixels(frame.image.rgb, "colour_" + frameName(frame.index));
   rgbd.depthSourceName = "simulated frame " + std::to_string(frame.index);
-  rawlog_.write(*makeRgbdObservation(rgbd));
+  const auto obs = makeRgbdObservation(rgbd);
+  setCameraPoseOnBody(*obs, sim_.T_body_camera());
+  rawlog_.write(*obs);
 
   const std::string labels =
       (fs::path(dir_) / "labels" / (frameName(frame.index) + ".png")).string();

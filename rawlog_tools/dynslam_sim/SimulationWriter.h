@@ -1,7 +1,8 @@
 #pragma once
 // Writes a simulated sequence to its folder as it is rendered:
 //   sim.rawlog (+ sim_Images/)  CObservation3DRangeScan "RGBD" (depth uint16 mm), CObservationIMU
-//                               "IMU", CObservationGPS "GPS" (GGA), in time order
+//                               "IMU", CObservationGPS "GPS" (GGA), in time order; the camera's
+//                               and the IMU's sensorPose say where they sit on the body
 //   groundtruth.tum             camera (optical frame) pose in the world, per frame
 //   objects.txt                 per frame and visible object: id, class, moving, world pose of
 //                               its rigid core, amodal 2-D box, visible pixels and fraction
@@ -37,6 +38,7 @@ class SimulationWriter {
   RawlogWriter rawlog_;
   ColourImageStore images_;
   std::ofstream groundtruth_, objects_, biases_;
+  Eigen::Isometry3d T_body_imu_;  // every IMU observation's sensorPose
   size_t next_imu_ = 0, next_gnss_ = 0;
 };
 

@@ -3,6 +3,10 @@
 #include "RawlogTestSupport.h"
 
 #include <dynslam/core/TrajectoryFile.h>
+#include <dynslam/io/RawlogSource.h>
+#include <dynslam/io/SensorSync.h>
+#include <dynslam/sim/ScenarioOptions.h>
+#include <dynslam/sim/Simulator.h>
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>
@@ -103,6 +107,36 @@ TEST(DynslamSim, PipelineReadsTheSimulatedRawlog) {
   const std::string summary = readTextFile(out + "/slam/summary.json");
   EXPECT_NE(summary.find("\"frames\": 31"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"imu_samples\": 201"), std::string::npos) << summary;
+}
+
+// sim -> rawlog -> SensorSync: the frames carry the simulator's camera and IMU extrinsics,
+// stored as MRPT's sensorPose (camera: depth frame +X forward, optical frame relative to it).
+TEST(DynslamSim, RawlogCarriesTheSensorExtrinsics) {
+  const std::string out = dynslam::testing::scratchDir("extrinsics");
+  const std::string mount =
+      "--set Camera.cam_x=0.12 --set Camera.cam_y=-0.05 --set Camera.cam_z=0.08 "
+      "--set Camera.cam_roll_deg=3 --set Camera.cam_pitch_deg=-7 --set Camera.cam_yaw_deg=11";
+  simulate(out, mount + " --set Scenario.duration=0.2");
+  const auto cfg = dynslam::core::IniConfig::fromFile(
+      dynslam::testing::sourceDir() + "/params/sim/indoor_people_high.ini",
+      {"Camera.cam_x=0.12", "Camera.cam_y=-0.05", "Camera.cam_z=0.08", "Camera.cam_roll_deg=3",
+       "Camera.cam_pitch_deg=-7", "Camera.cam_yaw_deg=11"});
+  dynslam::sim::ScenarioOptions options;
+  options.load(cfg);
+  const Eigen::Isometry3d expected = dynslam::sim::cameraInBody(options.camera);
+
+  dynslam::io::RawlogSource source(out + "/sim.rawlog");
+  dynslam::io::SensorSync sync;
+  std::vector<dynslam::core::Frame> frames;
+  while (auto obs = source.next()) sync.push(obs, frames);
+  sync.flush(frames);
+  ASSERT_EQ(frames.size(), 7u);
+  for (const auto& f : frames) {
+    EXPECT_TRUE(f.T_body_camera.isApprox(expected, 1e-9)) << "frame " << f.index << "\n"
+                                                          << f.T_body_camera.matrix();
+    EXPECT_TRUE(f.T_body_imu.isApprox(Eigen::Isometry3d::Identity(), 1e-12)) << f.index;
+    EXPECT_FALSE(f.imu.empty());
+  }
 }
 
 TEST(DynslamSim, UnknownKeyIsAnErrorNamingIt) {

@@ -58,7 +58,11 @@ void fillFrameFromRgbd(const mrpt::obs::CObservation3DRangeScan& obs, core::Fram
   raw.convertTo(depth, CV_32FC1, obs.rangeUnits);
   if (!obs.range_is_depth) rangesToDepths(depth, depthK);
 
+  // Depth optical frame (x right, y down, z forward) in MRPT's depth frame (+X forward).
+  const mrpt::poses::CPose3D opticalInDepth(0, 0, 0, mrpt::DEG2RAD(-90.0), 0,
+                                            mrpt::DEG2RAD(-90.0));
   if (obs.hasIntensityImage && !obs.intensityImage.isEmpty()) {
+    frame.T_body_camera = toEigen(obs.sensorPose) * toEigen(obs.relativePoseIntensityWRTDepth);
     cv::Mat img = obs.intensityImage.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
     if (img.channels() == 1)
       cv::cvtColor(img, frame.rgb, cv::COLOR_GRAY2BGR);
@@ -76,13 +80,12 @@ void fillFrameFromRgbd(const mrpt::obs::CObservation3DRangeScan& obs, core::Fram
       frame.depth = depth;
     } else {
       // Depth optical frame -> MRPT's depth frame (+X forward) -> colour optical frame.
-      const mrpt::poses::CPose3D opticalInDepth(0, 0, 0, mrpt::DEG2RAD(-90.0), 0,
-                                                mrpt::DEG2RAD(-90.0));
       const Eigen::Isometry3d T_colour_depth =
           toEigen(obs.relativePoseIntensityWRTDepth).inverse() * toEigen(opticalInDepth);
       frame.depth = registerDepth(depth, depthK, frame.intrinsics, T_colour_depth);
     }
   } else {
+    frame.T_body_camera = toEigen(obs.sensorPose) * toEigen(opticalInDepth);
     frame.rgb.release();
     frame.depth = depth;
     frame.intrinsics = depthK;
@@ -110,6 +113,10 @@ std::optional<core::ImuSample> imuSampleFrom(const mrpt::obs::CObservationIMU& o
              read(IMU_Z_ACC, "IMU_Z_ACC")};
   if (!s.has_gyro && !s.has_acc) return std::nullopt;
   return s;
+}
+
+Eigen::Isometry3d imuPoseOnBody(const mrpt::obs::CObservationIMU& obs) {
+  return toEigen(obs.sensorPose);
 }
 
 std::optional<core::GnssFix> gnssFixFrom(const mrpt::obs::CObservationGPS& obs) {

@@ -95,7 +95,10 @@ void SensorSync::push(const mrpt::obs::CObservation::Ptr& obs, std::vector<core:
     emitUpTo(t, out);
     lateCheck("IMU");
     ++counts_.imu;
-    if (auto s = imuSampleFrom(*imu)) imu_.push_back(*s);
+    if (auto s = imuSampleFrom(*imu)) {
+      imu_.push_back(*s);
+      T_body_imu_ = imuPoseOnBody(*imu);
+    }
     return;
   }
   if (auto gps = std::dynamic_pointer_cast<CObservationGPS>(obs);
@@ -142,6 +145,7 @@ void SensorSync::emit(core::Frame& frame, std::vector<core::Frame>& out) {
     frame.gnss.push_back(gnss_.front());
     gnss_.pop_front();
   }
+  if (T_body_imu_) frame.T_body_imu = *T_body_imu_;
   frame.index = counts_.frames++;
   last_frame_t_ = frame.t;
   out.push_back(std::move(frame));

@@ -160,3 +160,36 @@ TEST(SensorSync, LabelFilterIgnoresOtherSensors) {
   EXPECT_EQ(frames[0].sensor_label, "FRONT");
   EXPECT_EQ(sync.counts().other, 1u);
 }
+
+// MRPT's convention: sensorPose places the depth sensor's frame (+X forward) on the robot and
+// the colour optical frame is relativePoseIntensityWRTDepth from it. With the defaults the
+// camera looks along the body's x axis: optical z = body x, optical x = -body y.
+TEST(SensorSync, ExtrinsicsComeFromTheObservationsSensorPose) {
+  const auto rotated = [](const Eigen::Isometry3d& T, const Eigen::Vector3d& v) {
+    return Eigen::Vector3d(T.linear() * v);
+  };
+  {
+    SensorSync sync;
+    const auto frames = run(sync, {makeScan(1.0)});
+    ASSERT_EQ(frames.size(), 1u);
+    EXPECT_TRUE(rotated(frames[0].T_body_camera, Eigen::Vector3d::UnitZ())
+                    .isApprox(Eigen::Vector3d::UnitX(), 1e-12));
+    EXPECT_TRUE(rotated(frames[0].T_body_camera, Eigen::Vector3d::UnitX())
+                    .isApprox(-Eigen::Vector3d::UnitY(), 1e-12));
+    EXPECT_TRUE(frames[0].T_body_imu.isApprox(Eigen::Isometry3d::Identity()));
+  }
+  SensorSync sync;
+  auto scan = makeScan(1.0);
+  scan->sensorPose = mrpt::poses::CPose3D(0.1, -0.2, 0.3, 0.5, 0, 0);  // yawed 0.5 rad
+  auto imu = makeImu(0.99);
+  imu->sensorPose = mrpt::poses::CPose3D(0.01, 0.02, 0.03, 0, 0, M_PI);  // upside down
+  const auto frames = run(sync, {imu, scan});
+  ASSERT_EQ(frames.size(), 1u);
+  const auto& f = frames[0];
+  EXPECT_TRUE(f.T_body_camera.translation().isApprox(Eigen::Vector3d(0.1, -0.2, 0.3), 1e-12));
+  EXPECT_TRUE(rotated(f.T_body_camera, Eigen::Vector3d::UnitZ())
+                  .isApprox(Eigen::Vector3d(std::cos(0.5), std::sin(0.5), 0), 1e-12));
+  EXPECT_TRUE(f.T_body_imu.translation().isApprox(Eigen::Vector3d(0.01, 0.02, 0.03), 1e-12));
+  EXPECT_TRUE(rotated(f.T_body_imu, Eigen::Vector3d::UnitZ())
+                  .isApprox(-Eigen::Vector3d::UnitZ(), 1e-12));
+}

@@ -112,8 +112,7 @@ Augmenter::Augmenter(const ScenarioOptions& options) : options_(options) {
   summary_.spline_error = splineFitError(*trajectory_, cameras, T_body_camera_);
   const double end = frameTime(frames_.size() - 1);
   std::mt19937_64 imu_rng(subSeed(options_.world.seed, kImuStream));
-  imu_ = synthesizeImu(*trajectory_, 0.0, end, options_.imu.imu, Eigen::Isometry3d::Identity(),
-                       imu_rng);
+  imu_ = synthesizeImu(*trajectory_, 0.0, end, options_.imu.imu, T_body_imu(), imu_rng);
   if (options_.gnss.enabled) {
     std::mt19937_64 gnss_rng(subSeed(options_.world.seed, kGnssStream));
     gnss_ = synthesizeGnss(*trajectory_, 0.0, end, options_.gnss.gnss, gnss_rng);

@@ -116,8 +116,7 @@ Simulator::Simulator(ScenarioOptions options) : options_(std::move(options)) {
   T_body_camera_ = cameraInBody(options_.camera);
 
   std::mt19937_64 imuRng(subSeed(w.seed, kImuStream));
-  imu_ = synthesizeImu(*trajectory_, 0.0, w.duration, options_.imu.imu,
-                       Eigen::Isometry3d::Identity(), imuRng);
+  imu_ = synthesizeImu(*trajectory_, 0.0, w.duration, options_.imu.imu, T_body_imu(), imuRng);
   if (options_.gnss.enabled) {
     std::mt19937_64 gnssRng(subSeed(w.seed, kGnssStream));
     gnss_ = synthesizeGnss(*trajectory_, 0.0, w.duration, options_.gnss.gnss, gnssRng);

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
+#include <mrpt/poses/CPose3D.h>
 #include <mrpt/system/datetime.h>
 
 #include <cstring>
@@ -35,7 +36,24 @@ void copyDepth(const cv::Mat& depth, const std::optional<uint16_t>& invalidValue
   }
 }
 
+mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
+  mrpt::math::CMatrixDouble44 m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
+  return mrpt::poses::CPose3D(m);
+}
+
 }  // namespace
+
+void setCameraPoseOnBody(mrpt::obs::CObservation3DRangeScan& obs,
+                         const Eigen::Isometry3d& T_body_optical) {
+  // T_body_depthFrame = T_body_optical * T_optical_depthFrame.
+  obs.sensorPose = toPose(T_body_optical) + (-obs.relativePoseIntensityWRTDepth);
+}
+
+void setImuPoseOnBody(mrpt::obs::CObservationIMU& obs, const Eigen::Isometry3d& T_body_imu) {
+  obs.sensorPose = toPose(T_body_imu);
+}
 
 std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const RgbdFrame& frame) {
   if (frame.depth.empty() || frame.depth.type() != CV_16UC1)

@@ -53,9 +53,11 @@ struct Frame {
   cv::Mat depth;  ///< CV_32FC1, metres along the optical axis, 0 = invalid, registered to rgb
   CameraIntrinsics intrinsics;
 
-  /// Where the sensors sit on the body (robot) frame, from the observations' sensorPose: the
-  /// colour camera's optical frame (x right, y down, z forward) and the IMU's axes. Identity
-  /// when the rawlog does not say.
+  /// Where the sensors sit on the body (robot) frame, from the observations' sensorPose (io's
+  /// SensorSync): the colour camera's optical frame (x right, y down, z forward) and the IMU's
+  /// axes. A rawlog that leaves sensorPose at MRPT's default (identity) puts the body at the
+  /// camera's MRPT depth frame (x forward, y left, z up): T_body_camera is then the pure axis
+  /// change optical -> body, and T_body_imu identity (also when no IMU was seen).
   Eigen::Isometry3d T_body_camera = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d T_body_imu = Eigen::Isometry3d::Identity();
 

@@ -1,6 +1,7 @@
 #pragma once
 // Turns the observation stream of a rawlog into Frames: one per RGB-D observation, carrying the
-// IMU samples and GNSS fixes with timestamps in (previous frame, this frame]. A frame is handed
+// IMU samples and GNSS fixes with timestamps in (previous frame, this frame], and where the
+// camera and the IMU sit on the body (their observations' sensorPose). A frame is handed
 // out once an observation later than it arrives (or the stream ends), so samples stamped at
 // the frame's own time are never lost to file order.
 #include <dynslam/core/Config.h>
@@ -74,6 +75,7 @@ class SensorSync {
   std::map<std::string, double> last_t_;  // per sensor
   std::optional<double> last_frame_t_;    // last frame handed out
   std::optional<Eigen::Vector3d> origin_;
+  std::optional<Eigen::Isometry3d> T_body_imu_;  // sensorPose of the latest IMU observation
 };
 
 }  // namespace dynslam::io

@@ -66,6 +66,12 @@ class Sequence {
   virtual const std::vector<GnssFixSample>& gnss() const = 0;  ///< t in s since the start
   virtual double startTime() const = 0;  ///< Unix time of t = 0 (the rawlog stamps)
   virtual double maxRange() const = 0;   ///< m; the depth sensor's range (0 beyond it)
+  /// The colour camera's optical frame (x right, y down, z forward) in the body frame (x
+  /// forward, y left, z up): what the writer stores as the RGB-D observations' sensorPose.
+  virtual const Eigen::Isometry3d& T_body_camera() const = 0;
+  /// The IMU's axes in the body frame. The simulated body is the IMU itself (the samples are
+  /// synthesized with this extrinsic), so identity unless a source says otherwise.
+  virtual Eigen::Isometry3d T_body_imu() const { return Eigen::Isometry3d::Identity(); }
 };
 
 }  // namespace dynslam::sim

@@ -30,7 +30,7 @@ class Simulator : public Sequence {
   const ScenarioOptions& options() const { return options_; }
   const SplineTrajectory& trajectory() const { return *trajectory_; }
   /// Camera pose in the IMU (body) frame.
-  const Eigen::Isometry3d& T_body_camera() const { return T_body_camera_; }
+  const Eigen::Isometry3d& T_body_camera() const override { return T_body_camera_; }
   const std::vector<Agent>& agents() const { return scene_.agents; }
 
  private:

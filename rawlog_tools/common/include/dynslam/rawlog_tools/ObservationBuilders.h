@@ -4,6 +4,8 @@
 // their fields are used.
 #include <dynslam/rawlog_tools/ColourImageStore.h>
 #include <mrpt/core/Clock.h>
+
+#include <Eigen/Geometry>
 #include <opencv2/core/mat.hpp>
 
 #include <array>
@@ -47,6 +49,17 @@ struct RgbdFrame {
 /// relativePoseIntensityWRTDepth keeps MRPT's default (the cameras coincide).
 /// Throws ConversionError when depth is not CV_16UC1 or its size differs from the colour image.
 std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const RgbdFrame& frame);
+
+/// Records where the colour camera sits on the robot, the MRPT way: sensorPose is the pose of
+/// the depth sensor's own frame (+X forward, +Y left, +Z up) on the robot, and the colour
+/// camera's optical frame (x right, y down, z forward) is relativePoseIntensityWRTDepth from it.
+/// So sensorPose = T_body_optical * relativePoseIntensityWRTDepth^-1 (with MRPT's default
+/// relative pose, exactly the identity for a camera looking along the body's x axis).
+void setCameraPoseOnBody(mrpt::obs::CObservation3DRangeScan& obs,
+                         const Eigen::Isometry3d& T_body_optical);
+
+/// sensorPose of an IMU observation: the IMU's axes on the robot (body) frame.
+void setImuPoseOnBody(mrpt::obs::CObservationIMU& obs, const Eigen::Isometry3d& T_body_imu);
 
 /// An IMU observation with only the given groups set: has(IMU_WX) is false without gyro.
 /// gyro in rad/s (IMU_WX..WZ), acc in m/s^2 (IMU_X_ACC..Z_ACC); sensorPose stays identity.
