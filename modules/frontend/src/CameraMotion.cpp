@@ -40,6 +40,60 @@ std::optional<Eigen::Matrix3d> gyroCameraRotation(const std::vector<core::ImuSam
 CameraMotionEstimator::CameraMotionEstimator(CameraMotionParams params, std::uint32_t seed)
     : params_(params), rng_(seed) {}
 
+std::optional<RegistrationResult> CameraMotionEstimator::translationWithRotation(
+    const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
+    const Eigen::Matrix3d& R) {
+  if (p.empty()) return std::nullopt;
+  std::vector<Eigen::Vector3d> d(p.size());  // each pair's own translation
+  std::vector<double> gate2(p.size());        // squared inlier gate of each pair
+  for (size_t i = 0; i < p.size(); ++i) {
+    d[i] = q[i] - R * p[i];
+    // 3 sigma of the difference of two depth readings (sigma = depth_sigma_z2 z^2), at least
+    // 1 cm: a point 5 m away is as noisy as a walker's motion, and must not outvote near ones.
+    const double sp = params_.depth_sigma_z2 * p[i].z() * p[i].z();
+    const double sq = params_.depth_sigma_z2 * q[i].z() * q[i].z();
+    const double gate = std::max(0.01, 3 * std::sqrt(sp * sp + sq * sq));
+    gate2[i] = gate * gate;
+  }
+  auto inliersOfT = [&](const Eigen::Vector3d& t) {
+    std::vector<int> in;
+    for (size_t i = 0; i < d.size(); ++i)
+      if ((d[i] - t).squaredNorm() < gate2[i]) in.push_back(int(i));
+    return in;
+  };
+  // The precise translation weighs each inlier by the inverse variance of its pair; the
+  // hypotheses are ranked by their inlier COUNT: a few near points on an undetected mover must
+  // not outvote the many far ones of the static background.
+  auto weightedMean = [&](const std::vector<int>& in) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double w = 0;
+    for (int i : in) {
+      sum += d[size_t(i)] / gate2[size_t(i)];
+      w += 1.0 / gate2[size_t(i)];
+    }
+    return Eigen::Vector3d(sum / w);
+  };
+  auto support = [](const std::vector<int>& in) { return in.size(); };
+  std::vector<int> best = inliersOfT(previous_.t);
+  Eigen::Vector3d med;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> c(d.size());
+    for (size_t i = 0; i < d.size(); ++i) c[i] = d[i](axis);
+    med(axis) = median(std::move(c));
+  }
+  if (auto in = inliersOfT(med); support(in) > support(best)) best = std::move(in);
+  std::uniform_int_distribution<size_t> pick(0, d.size() - 1);
+  for (int it = 0; it < params_.ransac.iterations; ++it)  // one pair fixes a translation
+    if (auto in = inliersOfT(d[pick(rng_)]); support(in) > support(best)) best = std::move(in);
+  if (best.empty()) return std::nullopt;
+  RegistrationResult r;
+  r.motion = {R, weightedMean(best)};
+  r.inliers = inliersOfT(r.motion.t);
+  if (r.inliers.empty()) r.inliers = best;
+  r.motion.t = weightedMean(r.inliers);
+  return r;
+}
+
 CameraMotionEstimate CameraMotionEstimator::estimate(
     const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
     const std::optional<Eigen::Matrix3d>& gyro_rotation,
@@ -49,30 +103,34 @@ CameraMotionEstimate CameraMotionEstimator::estimate(
   if (T_world_prev && T_world_cur) {
     e.motion = RigidMotion::from(T_world_cur->inverse() * *T_world_prev);
     e.source = CameraMotionSource::Poses;
-  } else {
+    previous_ = e.motion;
+    return e;
+  }
+  std::optional<RegistrationResult> r;
+  if (gyro_rotation) {
+    r = translationWithRotation(p, q, *gyro_rotation);
+    if (r) e.source = CameraMotionSource::ImuRotationRegistration;
+  }
+  // Without a gyro, or when the gyro's rotation leaves most pairs unexplained (extrinsics that
+  // do not hold, a saturated gyro): the full 6-DoF registration, which keeps the better one.
+  if (!r || 2 * r->inliers.size() < p.size()) {
     std::vector<RigidMotion> extra{previous_};
-    if (gyro_rotation && !p.empty()) {
-      // The IMU rotation with the translation that most background pairs agree on.
-      Eigen::Vector3d t;
-      for (int axis = 0; axis < 3; ++axis) {
-        std::vector<double> d(p.size());
-        for (size_t i = 0; i < p.size(); ++i) d[i] = (q[i] - *gyro_rotation * p[i])(axis);
-        t(axis) = median(std::move(d));
-      }
-      extra.push_back({*gyro_rotation, t});
-    }
-    const auto r = registerRansac(p, q, params_.ransac, rng_, {}, extra);
-    if (r && int(r->inliers.size()) >= params_.min_inliers) {
-      e.motion = r->motion;
+    if (r) extra.push_back(r->motion);
+    auto full = registerRansac(p, q, params_.ransac, rng_, {}, extra);
+    if (full && (!r || full->inliers.size() > r->inliers.size())) {
+      r = std::move(full);
       e.source = CameraMotionSource::Registration;
-      e.inliers = int(r->inliers.size());
-    } else if (gyro_rotation) {
-      e.motion = {*gyro_rotation, previous_.t};
-      e.source = CameraMotionSource::ImuRotationConstantVelocity;
-    } else {
-      e.motion = previous_;
-      e.source = CameraMotionSource::ConstantVelocity;
     }
+  }
+  if (r && int(r->inliers.size()) >= params_.min_inliers) {
+    e.motion = r->motion;
+    e.inliers = int(r->inliers.size());
+  } else if (gyro_rotation) {
+    e.motion = {*gyro_rotation, previous_.t};
+    e.source = CameraMotionSource::ImuRotationConstantVelocity;
+  } else {
+    e.motion = previous_;
+    e.source = CameraMotionSource::ConstantVelocity;
   }
   previous_ = e.motion;
   return e;

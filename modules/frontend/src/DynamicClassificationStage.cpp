@@ -32,6 +32,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
     throw core::ConfigError("[" + s + "] speed_statistic = '" + stat +
                             "': expected median_flow or mean_norm");
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
+  p.depth_window = c.read_int(s, "depth_window", p.depth_window);
   p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
   p.rigid.ransac.sample_size = c.read_int(s, "rigid_sample_size", p.rigid.ransac.sample_size);
   p.rigid.ransac.inlier_threshold =
@@ -41,6 +42,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.camera.ransac.inlier_threshold =
       c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);
   p.camera.min_inliers = c.read_int(s, "camera_min_inliers", p.camera.min_inliers);
+  p.camera.depth_sigma_z2 = c.read_double(s, "depth_sigma_z2", p.camera.depth_sigma_z2);
   p.seed = std::uint32_t(c.read_int(s, "seed", int(p.seed)));
 }
 
@@ -55,6 +57,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
   write(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
+  write(c, s, "depth_window", p.depth_window,
+        "px; a feature's 3-D point uses the robust median depth of this window (1: its pixel)");
   write(c, s, "rigid_iterations", p.rigid.ransac.iterations,
         "RANSAC hypotheses of the rigid point sets (method.md: 100)");
   write(c, s, "rigid_sample_size", p.rigid.ransac.sample_size,
@@ -69,6 +73,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "m; inlier threshold of the camera-motion registration");
   write(c, s, "camera_min_inliers", p.camera.min_inliers,
         "fewer background inliers: IMU rotation / constant velocity instead");
+  write(c, s, "depth_sigma_z2", p.camera.depth_sigma_z2,
+        "1/m; depth noise sigma = this * z^2: gates/weights the camera translation's pairs");
   write(c, s, "seed", int(p.seed), "seed of the RANSAC draws (runs are repeatable)");
 }
 
@@ -84,6 +90,10 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
   if (p.speed_window < 1) fail("speed_window", std::to_string(p.speed_window), "must be >= 1");
   if (p.min_flow_features < 1)
     fail("min_flow_features", std::to_string(p.min_flow_features), "must be >= 1");
+  if (p.depth_window < 1 || p.depth_window % 2 == 0)
+    fail("depth_window", std::to_string(p.depth_window), "must be odd and >= 1");
+  if (!(p.camera.depth_sigma_z2 >= 0))
+    fail("depth_sigma_z2", std::to_string(p.camera.depth_sigma_z2), "must be >= 0");
   if (p.rigid.ransac.iterations < 1)
     fail("rigid_iterations", std::to_string(p.rigid.ransac.iterations), "must be >= 1");
   if (p.rigid.ransac.sample_size < 3)

@@ -31,11 +31,30 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
   return m.norm();
 }
 
+/// The median depth of the valid pixels within `half` px of `pixel` that lie on the same surface
+/// as most of the window (within 5 cm or 2 % of its median); 0 when none is valid.
+float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, std::vector<double>& buf) {
+  const int x0 = cvRound(pixel.x), y0 = cvRound(pixel.y);
+  buf.clear();
+  for (int y = std::max(0, y0 - half); y <= std::min(depth.rows - 1, y0 + half); ++y) {
+    const float* row = depth.ptr<float>(y);
+    for (int x = std::max(0, x0 - half); x <= std::min(depth.cols - 1, x0 + half); ++x)
+      if (row[x] > 0) buf.push_back(row[x]);
+  }
+  if (buf.empty()) return 0;
+  const double m0 = median(buf);
+  const double band = std::max(0.05, 0.02 * m0);
+  buf.erase(std::remove_if(buf.begin(), buf.end(), [&](double z) { return std::abs(z - m0) > band; }),
+            buf.end());
+  return float(median(buf));
+}
+
 }  // namespace
 
 const char* toString(CameraMotionSource source) {
   switch (source) {
     case CameraMotionSource::Poses: return "poses";
+    case CameraMotionSource::ImuRotationRegistration: return "imu_rotation+registration";
     case CameraMotionSource::Registration: return "registration";
     case CameraMotionSource::ImuRotationConstantVelocity: return "imu_rotation+constant_velocity";
     case CameraMotionSource::ConstantVelocity: return "constant_velocity";
@@ -66,15 +85,36 @@ void DynamicClassifier::process(core::Frame& frame) {
   };
   std::vector<Current> cur(frame.features.size());
   std::vector<Eigen::Vector3d> bgPrev, bgCur;
+  std::map<int, const core::Track*> tracks;
+  for (const auto& t : frame.tracks) tracks[t.id] = &t;
+  std::map<int, ObjectRegion> maskless;  // tracks seen this frame without a mask
+  std::map<std::int64_t, int> nextObjectOf;
+  const bool windowed = params_.depth_window > 1 && !frame.depth.empty() &&
+                        frame.depth.type() == CV_32FC1;
+  std::vector<double> buf;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
     auto& c = cur[i];
     c.region = regionAt(regions, f.pixel);
+    if (!c.region) {
+      // No mask holds it, but it was on a tracked object last frame and that track is still
+      // there (the detector missed it: the track coasts): it stays with the object.
+      const auto last = objectOf_.find(f.id);
+      if (last != objectOf_.end()) {
+        const auto t = tracks.find(last->second);
+        if (t != tracks.end())
+          c.region = &maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model})
+                          .first->second;
+      }
+    }
     f.object_id = c.region ? c.region->object_id : -1;
+    if (c.region) nextObjectOf[f.id] = f.object_id;
     f.feature_class = core::FeatureClass::Static;
-    if (!(f.depth > 0)) continue;
+    const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2, buf)
+                             : f.depth;
+    if (!(z > 0) || !(f.depth > 0)) continue;
     c.has_point = true;
-    c.P = backProject(f.pixel, f.depth, frame.intrinsics);
+    c.P = backProject(f.pixel, z, frame.intrinsics);
     const auto h = history_.find(f.id);
     if (h != history_.end() && !h->second.empty() && h->second.back().frame + 1 == now)
       c.previous = &h->second.back();
@@ -182,6 +222,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     next.emplace(frame.features[i].id, std::move(d));
   }
   history_ = std::move(next);
+  objectOf_ = std::move(nextObjectOf);
   prevT_ = frame.t;
   prevPose_ = frame.T_world_camera;
   ++frame_;

@@ -135,7 +135,7 @@ TEST(DynamicClassifier, ClassifiesMoversAndNonMovers) {
     f = scene.frame(k);
     classifier.process(f);
     if (k == 0) continue;
-    EXPECT_EQ(classifier.lastCameraMotion().source, CameraMotionSource::Registration);
+    EXPECT_EQ(classifier.lastCameraMotion().source, CameraMotionSource::ImuRotationRegistration);
     const Eigen::Isometry3d truth = cameraPose(f.t).inverse() * cameraPose(f.t - kDt);
     EXPECT_LT((classifier.lastCameraMotion().motion.isometry().matrix() - truth.matrix()).norm(),
               1e-6)

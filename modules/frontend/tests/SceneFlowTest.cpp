@@ -80,13 +80,25 @@ TEST(CameraMotion, BackgroundRegistrationRecoversTheMotionAmongMovers) {
   for (int i = 0; i < 80; ++i) {
     p.emplace_back(u(gen), u(gen) / 2, 4 + u(gen) / 2);
     q.push_back(T * p.back());
-    if (i % 10 == 0) q.back() += Eigen::Vector3d(0.1, 0, 0.04);  // a walker in the background
+    if (i % 10 == 0) q.back() += Eigen::Vector3d(0.25, 0, 0.1);  // a walker in the background
   }
+  // With the gyro's rotation only the translation is registered; without, all six degrees.
+  CameraMotionEstimator withGyro;
+  const auto g = withGyro.estimate(p, q, T.linear(), std::nullopt, std::nullopt);
+  EXPECT_EQ(g.source, CameraMotionSource::ImuRotationRegistration);
+  EXPECT_EQ(g.inliers, 72);
+  EXPECT_LT((g.motion.isometry().matrix() - T.matrix()).norm(), 1e-9);
   CameraMotionEstimator estimator;
-  const auto e = estimator.estimate(p, q, T.linear(), std::nullopt, std::nullopt);
+  const auto e = estimator.estimate(p, q, std::nullopt, std::nullopt, std::nullopt);
   EXPECT_EQ(e.source, CameraMotionSource::Registration);
   EXPECT_EQ(e.inliers, 72);
   EXPECT_LT((e.motion.isometry().matrix() - T.matrix()).norm(), 1e-9);
+  // A gyro rotation that does not hold (wrong extrinsics: 20 deg off) loses to the registration.
+  CameraMotionEstimator wrongGyro;
+  const Eigen::Matrix3d bad = Eigen::AngleAxisd(0.35, Eigen::Vector3d::UnitX()) * T.linear();
+  const auto w = wrongGyro.estimate(p, q, bad, std::nullopt, std::nullopt);
+  EXPECT_EQ(w.source, CameraMotionSource::Registration);
+  EXPECT_LT((w.motion.isometry().matrix() - T.matrix()).norm(), 1e-9);
   // Poses of an earlier stage win.
   const Eigen::Isometry3d T_w_c0 = pose({1, 0, 0}, 0.2, {1, 2, 3});
   const Eigen::Isometry3d T_w_c1 = T_w_c0 * T.inverse();

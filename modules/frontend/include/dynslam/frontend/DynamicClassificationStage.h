@@ -28,6 +28,8 @@ class DynamicClassificationStage : public core::Stage {
   void finish() override;
 
   const DynamicClassificationOptions& options() const { return options_; }
+  /// The classifier after configure() (for benches: the last camera motion, counters).
+  const DynamicClassifier* classifier() const { return classifier_.get(); }
 
  private:
   DynamicClassificationOptions options_;

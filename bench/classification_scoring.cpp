@@ -1,0 +1,77 @@
+#include "classification_scoring.h"
+
+#include <dynslam/frontend/RigidRegistration.h>
+
+#include <algorithm>
+
+namespace dynslam::bench {
+namespace {
+
+int labelAt(const cv::Mat& labels, const cv::Point2f& p) {
+  const int x = cvRound(p.x), y = cvRound(p.y);
+  if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return 0;
+  return labels.at<uint16_t>(y, x);
+}
+
+const core::ObjectGroundTruthRow* rowOf(const std::vector<core::ObjectGroundTruthRow>& rows,
+                                        int id) {
+  for (const auto& r : rows)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
+void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
+                              const Truth* previous) {
+  std::map<int, std::pair<size_t, size_t>> perObject;  // label -> features, Static ones
+  std::map<std::int64_t, int> labelOfFeature;
+  for (const auto& f : frame.features) {
+    const int label = labelAt(truth.labels, f.pixel);
+    labelOfFeature[f.id] = label;
+    const auto* row = label ? rowOf(truth.objects, label) : nullptr;
+    const bool truthDynamic = row && row->moving;
+    const bool predicted = f.feature_class != core::FeatureClass::Static;
+    tp += truthDynamic && predicted;
+    fp += !truthDynamic && predicted;
+    fn += truthDynamic && !predicted;
+    tn += !truthDynamic && !predicted;
+    if (row) {
+      ++perObject[label].first;
+      perObject[label].second += !predicted;
+    }
+  }
+  for (const auto& [label, counts] : perObject) {
+    if (counts.first < 3) continue;
+    const auto* row = rowOf(truth.objects, label);
+    const bool isStatic = 2 * counts.second >= counts.first;
+    auto& tally = row->moving ? moving[row->category] : nonMoving[row->category];
+    ++tally.first;
+    tally.second += row->moving ? !isStatic : isStatic;
+  }
+  if (!previous) return;
+  for (const auto& s : frame.rigid_sets) {
+    std::map<int, int> votes;
+    for (auto id : s.members) ++votes[labelOfFeature.count(id) ? labelOfFeature[id] : 0];
+    const auto best = std::max_element(votes.begin(), votes.end(), [](auto& a, auto& b) {
+      return a.second < b.second;
+    });
+    const auto* now = best->first ? rowOf(truth.objects, best->first) : nullptr;
+    const auto* before = best->first ? rowOf(previous->objects, best->first) : nullptr;
+    if (!now || !before || !now->moving) {
+      ++rigidSetsUnmatched;
+      continue;
+    }
+    frontend::RigidMotion M{s.R, s.t};
+    const Eigen::Isometry3d A =
+        truth.T_world_camera * M.isometry() * previous->T_world_camera.inverse();
+    const Eigen::Isometry3d Agt = now->T_world_object * before->T_world_object.inverse();
+    const Eigen::Vector3d c =
+        previous->T_world_camera * (s.R.transpose() * (s.virtual_centroid - s.t));
+    rotErrDeg[now->category].push_back(
+        frontend::rotationAngleDeg(A.linear().transpose() * Agt.linear()));
+    transErrM[now->category].push_back((A * c - Agt * c).norm());
+  }
+}
+
+}  // namespace dynslam::bench

@@ -1,0 +1,42 @@
+#pragma once
+// bench-classification's scoring of one frame's classification against the simulator's ground
+// truth: labels/NNNNNN.png (instance id per pixel), objects.txt (each object's moving flag and
+// rigid-core pose: a person's torso, a car's body) and groundtruth.tum (camera poses).
+//  - dynamic class: a feature is truly dynamic when its pixel's label is an object that moves
+//    in this frame; it is predicted dynamic when its class is not Static;
+//  - non-moving objects (standing person, parked car): the frame counts as "static" when at
+//    least half of the features whose pixels show the object are Static (objects with >= 3);
+//  - rigid sets: the set's object is the label most of its members show; its camera-frame
+//    motion M (q = R p + t) becomes the world motion A = T_wc(k) M T_wc(k-1)^-1 and is compared
+//    with the torso's (car's) A_gt = L_k L_{k-1}^-1: rotation error angle(R_A^T R_gt), translation
+//    error |A(c) - A_gt(c)| at the world position c of the set's virtual centroid in frame k-1
+//    (the displacement of the points it stands for).
+#include <dynslam/core/Frame.h>
+#include <dynslam/core/ObjectGroundTruth.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dynslam::bench {
+
+struct Truth {
+  cv::Mat labels;  ///< CV_16UC1
+  std::vector<core::ObjectGroundTruthRow> objects;
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+};
+
+struct ClassificationScore {
+  size_t tp = 0, fp = 0, fn = 0, tn = 0;
+  /// category -> frames a non-moving object was seen with >= 3 features, and of those, static.
+  std::map<std::string, std::pair<size_t, size_t>> nonMoving;
+  std::map<std::string, std::pair<size_t, size_t>> moving;  ///< same for moving: dynamic
+  std::map<std::string, std::vector<double>> rotErrDeg, transErrM;  ///< per category
+  size_t rigidSetsUnmatched = 0;  ///< sets whose members mostly show no moving object
+
+  void add(const core::Frame& frame, const Truth& truth, const Truth* previous);
+  double precision() const { return tp + fp ? double(tp) / double(tp + fp) : 0; }
+  double recall() const { return tp + fn ? double(tp) / double(tp + fn) : 0; }
+};
+
+}  // namespace dynslam::bench

@@ -1,0 +1,284 @@
+// Dynamic-feature classification and rigid point sets (issue 5, method.md sections 3-4), scored
+// against the simulator's ground truth, plus the real static room of 7-Scenes.
+//
+//   build/bin/dynslam-sim --config params/sim/indoor_people_high.ini --out /tmp/sim/indoor
+//   build/bin/bench-classification --sim /tmp/sim/indoor [--config params/sim_frontend.ini]
+//       [--masks pipeline|truth] [--features stage|klt] [--max-frames N]
+//       [--set Section.key=value]...
+//   build/bin/bench-classification --rawlog /tmp/7s/7scenes.rawlog --config params/7scenes_frontend.ini
+//
+// The frames come from the rawlog through io's SensorSync, as in `dynslam`, and go through the
+// stages of the ini's [pipeline] (created from the same registry as `dynslam`; with --sim,
+// Detection.objects is set to DIR/objects.txt). --masks truth replaces, just before
+// DynamicClassification, each mask of a detection that came from the ground truth with the
+// object's true pixels (label == id inside the box): the classification scored without the
+// segmentation's errors. --features klt uses a plain Shi-Tomasi/KLT stand-in
+// (classification_klt_standin.h) instead of the FeatureTracking stage (the default when no such
+// stage is registered). Scoring rules: classification_scoring.h. Timings: wall clock of each
+// stage per frame, medians within the run.
+#include "classification_klt_standin.h"
+#include "classification_scoring.h"
+
+#include <runner/BuiltinStages.h>
+#include <dynslam/core/CommandLine.h>
+#include <dynslam/core/Config.h>
+#include <dynslam/core/StageRegistry.h>
+#include <dynslam/core/TrajectoryFile.h>
+#include <dynslam/frontend/DynamicClassificationStage.h>
+#include <dynslam/io/RawlogSource.h>
+#include <dynslam/io/SensorSync.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace {
+
+using namespace dynslam;
+namespace fs = std::filesystem;
+
+struct Settings {
+  std::string sim, rawlog, config = "params/sim_frontend.ini", masks = "pipeline", features;
+  long max_frames = -1;
+  std::vector<std::string> overrides;
+};
+
+struct StageSlot {
+  std::string name;
+  std::unique_ptr<core::Stage> stage;  ///< null: the KLT stand-in
+  std::vector<double> ms;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+/// Masks of ground-truth detections replaced by the object's true pixels.
+void useTrueMasks(core::Frame& frame, const cv::Mat& labels) {
+  for (auto& m : frame.object_masks) {
+    if (m.detection < 0 || size_t(m.detection) >= frame.detections.size()) continue;
+    const int id = frame.detections[size_t(m.detection)].truth_id;
+    if (id < 0 || m.roi.empty()) continue;
+    m.mask = labels(m.roi) == id;
+    m.valid = cv::countNonZero(m.mask) > 0;
+  }
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, size_t(p * double(v.size())))];
+}
+
+void printRatio(const char* what, double value, double target, bool atLeast, const char* unit) {
+  std::printf("%-44s %8.4g%s (target %s %g%s; ratio %.2f)%s\n", what, value, unit,
+              atLeast ? ">=" : "<=", target, unit, target ? value / target : 0.0,
+              (atLeast ? value >= target : value <= target) ? "" : "  MISSED");
+}
+
+void run(const Settings& s) {
+  std::vector<std::string> overrides = s.overrides;
+  std::string rawlog = s.rawlog;
+  std::optional<core::ObjectGroundTruthIndex> objects;
+  core::Trajectory cameras;
+  if (!s.sim.empty()) {
+    rawlog = (fs::path(s.sim) / "sim.rawlog").string();
+    const std::string objectsPath = (fs::path(s.sim) / "objects.txt").string();
+    overrides.insert(overrides.begin(), "Detection.objects=" + objectsPath);
+    objects.emplace(core::readObjectGroundTruth(objectsPath));
+    cameras = core::readTum((fs::path(s.sim) / "groundtruth.tum").string());
+  }
+  const auto cfg = core::IniConfig::fromFile(s.config, overrides);
+  core::StageRegistry registry;
+  runner::registerBuiltinStages(registry);
+  const bool standIn =
+      s.features == "klt" || (s.features.empty() && !registry.contains("FeatureTracking"));
+
+  std::vector<StageSlot> stages;
+  std::stringstream list(cfg.ini().read_string("pipeline", "stages", ""));
+  for (std::string item; list >> item;) {
+    item.erase(std::remove(item.begin(), item.end(), ','), item.end());
+    if (item.empty()) continue;
+    const size_t colon = item.find(':');
+    const std::string cls = item.substr(0, colon);
+    const std::string section = colon == std::string::npos ? cls : item.substr(colon + 1);
+    StageSlot slot{item, nullptr, {}};
+    if (!(cls == "FeatureTracking" && standIn)) {
+      slot.stage = registry.create(cls);
+      slot.stage->configure(cfg, section);
+    } else {
+      slot.name = "FeatureTracking (KLT stand-in)";
+    }
+    stages.push_back(std::move(slot));
+  }
+  io::SensorSyncOptions syncOptions;
+  core::loadOptionsStrict(syncOptions, cfg, io::SensorSync::kSection);
+  io::SensorSync sync(syncOptions);
+  io::RawlogSource source(rawlog);
+  bench::KltStandIn klt;
+
+  bench::ClassificationScore score;
+  std::optional<bench::Truth> previous;
+  std::map<std::int64_t, int> trackLength;
+  std::vector<double> cameraRotErr, cameraTransErr;
+  size_t frames = 0, features = 0, staticFeatures = 0, withDepth = 0;
+  std::vector<core::Frame> ready;
+  bool more = true;
+  while (more) {
+    const auto obs = source.next();
+    if (obs)
+      sync.push(obs, ready);
+    else {
+      sync.flush(ready);
+      more = false;
+    }
+    for (auto& frame : ready) {
+      if (s.max_frames >= 0 && long(frames) >= s.max_frames) {
+        more = false;
+        break;
+      }
+      std::optional<bench::Truth> truth;
+      if (objects) {
+        char name[32];
+        std::snprintf(name, sizeof name, "%06zu.png", frame.index);
+        bench::Truth t;
+        const std::string path = (fs::path(s.sim) / "labels" / name).string();
+        t.labels = cv::imread(path, cv::IMREAD_UNCHANGED);
+        if (t.labels.empty() || t.labels.type() != CV_16UC1)
+          throw std::runtime_error("cannot read the 16-bit label image '" + path + "'");
+        t.objects = objects->byFrame(frame.index);
+        if (frame.index >= cameras.size())
+          throw std::runtime_error("groundtruth.tum has no pose for frame " +
+                                   std::to_string(frame.index));
+        t.T_world_camera = cameras[frame.index].T_world_body;
+        truth = std::move(t);
+      }
+      for (auto& slot : stages) {
+        if (truth && s.masks == "truth" && slot.name.rfind("DynamicClassification", 0) == 0)
+          useTrueMasks(frame, truth->labels);
+        const auto t0 = std::chrono::steady_clock::now();
+        if (slot.stage)
+          slot.stage->process(frame);
+        else
+          klt.process(frame);
+        slot.ms.push_back(std::chrono::duration<double, std::milli>(
+                              std::chrono::steady_clock::now() - t0)
+                              .count());
+      }
+      // The camera motion the classifier removed, against the ground truth.
+      for (const auto& slot : stages)
+        if (const auto* dc = dynamic_cast<const frontend::DynamicClassificationStage*>(slot.stage.get());
+            dc && truth && previous && frames > 0) {
+          const Eigen::Isometry3d gt = truth->T_world_camera.inverse() * previous->T_world_camera;
+          const auto& e = dc->classifier()->lastCameraMotion();
+          cameraRotErr.push_back(frontend::rotationAngleDeg(e.motion.R.transpose() * gt.linear()));
+          cameraTransErr.push_back((e.motion.t - gt.translation()).norm());
+        }
+      ++frames;
+      for (const auto& f : frame.features) {
+        ++features;
+        staticFeatures += f.feature_class == core::FeatureClass::Static;
+        withDepth += f.depth > 0;
+        trackLength[f.id] = std::max(trackLength[f.id], f.track_length);
+      }
+      if (truth) {
+        const bool consecutive = previous && frames > 1;
+        score.add(frame, *truth, consecutive ? &*previous : nullptr);
+        previous = std::move(truth);
+      }
+      if (frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", frames);
+    }
+    ready.clear();
+  }
+  for (auto& slot : stages)
+    if (slot.stage) slot.stage->finish();
+
+  double lengthSum = 0;
+  for (const auto& [id, n] : trackLength) lengthSum += n;
+  std::printf("input          %s, %zu frames, config %s, masks %s, features %s\n",
+              rawlog.c_str(), frames, s.config.c_str(), s.masks.c_str(),
+              standIn ? "KLT stand-in" : "FeatureTracking stage");
+  std::printf("features       %.1f per frame (%.1f %% with depth), %zu tracks, mean track length %.1f frames\n",
+              frames ? double(features) / frames : 0, features ? 100.0 * withDepth / features : 0,
+              trackLength.size(), trackLength.empty() ? 0 : lengthSum / trackLength.size());
+  if (objects) {
+    std::printf("camera motion  median error %.3f deg, %.1f mm per frame (p90 %.3f deg, %.1f mm)\n",
+                median(cameraRotErr), 1000 * median(cameraTransErr),
+                percentile(cameraRotErr, 0.9), 1000 * percentile(cameraTransErr, 0.9));
+    std::printf("dynamic class  TP %zu  FP %zu  FN %zu  TN %zu\n", score.tp, score.fp, score.fn,
+                score.tn);
+    printRatio("dynamic-class precision", score.precision(), 0.95, true, "");
+    printRatio("dynamic-class recall", score.recall(), 0.90, true, "");
+    for (const auto& [category, n] : score.nonMoving) {
+      const std::string what = "non-moving " + category + ": frames classified static";
+      printRatio(what.c_str(), n.first ? double(n.second) / n.first : 0, 0.90, true, "");
+      std::printf("%-44s (%zu object-frames with >= 3 features)\n", "", n.first);
+    }
+    for (const auto& [category, n] : score.moving)
+      std::printf("%-44s %8.4g (%zu object-frames)\n",
+                  ("moving " + category + ": frames classified dynamic").c_str(),
+                  n.first ? double(n.second) / n.first : 0, n.first);
+    const std::map<std::string, std::pair<double, double>> targets{{"person", {2.0, 0.02}},
+                                                                    {"car", {0.5, 0.01}}};
+    for (const auto& [category, errs] : score.rotErrDeg) {
+      const auto target = targets.count(category) ? targets.at(category) : std::make_pair(2.0, 0.02);
+      std::printf("rigid sets on moving %ss: %zu set-frames\n", category.c_str(), errs.size());
+      printRatio(("  median rotation error, " + category).c_str(), median(errs), target.first,
+                 false, " deg");
+      printRatio(("  median translation error, " + category).c_str(),
+                 median(score.transErrM.at(category)), target.second, false, " m");
+    }
+    std::printf("rigid sets not on a moving object: %zu\n", score.rigidSetsUnmatched);
+  } else {
+    printRatio("features classified static", features ? double(staticFeatures) / features : 0,
+               0.98, true, "");
+  }
+  for (const auto& slot : stages) {
+    const double m = median(slot.ms);
+    if (slot.name.rfind("DynamicClassification", 0) == 0)
+      printRatio("classification + rigid sets, median per frame", m, 1.0, false, " ms");
+    else
+      std::printf("%-44s %8.4g ms median per frame\n", slot.name.c_str(), m);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return core::runProgram("bench-classification", [&] {
+    core::CommandLine cl({"--sim", "--rawlog", "--config", "--masks", "--features", "--max-frames"},
+                         {}, {"--set"});
+    cl.parse(argc, argv);
+    if (cl.helpRequested()) {
+      std::cout << "usage: bench-classification (--sim DIR | --rawlog FILE) [--config INI] "
+                   "[--masks pipeline|truth] [--features stage|klt] [--max-frames N] "
+                   "[--set Section.key=value]...\n";
+      return 0;
+    }
+    Settings s;
+    s.sim = cl.valueOr("--sim", "");
+    s.rawlog = cl.valueOr("--rawlog", "");
+    if (s.sim.empty() == s.rawlog.empty())
+      throw core::UsageError("give exactly one of --sim DIR and --rawlog FILE");
+    s.config = cl.valueOr("--config", s.config);
+    s.masks = cl.valueOr("--masks", s.masks);
+    if (s.masks != "pipeline" && s.masks != "truth")
+      throw core::UsageError("--masks must be pipeline or truth, not '" + s.masks + "'");
+    s.features = cl.valueOr("--features", "");
+    if (!s.features.empty() && s.features != "stage" && s.features != "klt")
+      throw core::UsageError("--features must be stage or klt, not '" + s.features + "'");
+    s.max_frames = long(cl.optionalInteger("--max-frames").value_or(-1));
+    s.overrides = cl.all("--set");
+    run(s);
+    return 0;
+  });
+}
