@@ -1,0 +1,108 @@
+#include <dynslam/estimator/factors/StaticReprojectionFactor.h>
+
+#include "FactorJacobianCheck.h"
+#include "FactorTestStates.h"
+
+#include <gtest/gtest.h>
+
+using namespace dynslam::estimator;
+using namespace dynslam::estimator::testing;
+
+namespace {
+
+struct StaticScene {
+  Eigen::Isometry3d T_wbi, T_wbj, T_bc;
+  Eigen::Vector2d pixel_i, pixel_j;  ///< pixel_j exact (noise added by the tests that want it)
+  double inverse_depth = 0;
+};
+
+StaticScene randomStaticScene(std::mt19937& rng) {
+  const PinholeCamera cam = testCamera();
+  for (;;) {
+    StaticScene s;
+    s.T_wbi = randomPose(rng, 5.0, M_PI);
+    s.T_bc = randomExtrinsic(rng);
+    s.T_wbj = s.T_wbi * randomPose(rng, 0.3, 0.2);
+    const Eigen::Vector3d p_ci = randomPointInView(rng, cam);
+    s.pixel_i = cam.project(p_ci);
+    s.inverse_depth = 1.0 / p_ci.z();
+    const Eigen::Vector3d p_cj = s.T_bc.inverse() * s.T_wbj.inverse() * s.T_wbi * s.T_bc * p_ci;
+    if (p_cj.z() < 0.5) continue;  // keep it well in front of camera j
+    s.pixel_j = cam.project(p_cj);
+    return s;
+  }
+}
+
+std::vector<std::vector<double>> blocksOf(const StaticScene& s) {
+  return {poseBlock(s.T_wbi), poseBlock(s.T_wbj), poseBlock(s.T_bc), {s.inverse_depth}};
+}
+
+Eigen::Vector2d residualAt(const ceres::CostFunction& f, std::vector<std::vector<double>> b) {
+  std::vector<double*> p;
+  for (auto& x : b) p.push_back(x.data());
+  Eigen::Vector2d r;
+  EXPECT_TRUE(f.Evaluate(p.data(), r.data(), nullptr));
+  return r;
+}
+
+}  // namespace
+
+TEST(StaticReprojectionFactor, AnalyticJacobianMatchesNumericAtRandomStates) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> pixelNoise(0.0, 3.0);
+  double worst = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const StaticScene s = randomStaticScene(rng);
+    // Off the true state, so the residual's curvature shows in the check.
+    const Eigen::Vector2d observed = s.pixel_j + Eigen::Vector2d(pixelNoise(rng), pixelNoise(rng));
+    const StaticReprojectionFactor f(testCamera(), s.pixel_i, observed, 1.5);
+    const JacobianMismatch m = compareJacobians(f, blocksOf(s), {true, true, true, false});
+    EXPECT_LT(m.max_rel_error, 1e-5) << "trial " << trial << ": " << m.where;
+    worst = std::max(worst, m.max_rel_error);
+  }
+  std::printf("worst relative Jacobian error over 20 states: %.1e\n", worst);
+}
+
+TEST(StaticReprojectionFactor, ResidualIsZeroAtTheTrueState) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 10; ++trial) {
+    const StaticScene s = randomStaticScene(rng);
+    const StaticReprojectionFactor f(testCamera(), s.pixel_i, s.pixel_j, 1.5);
+    EXPECT_LT(residualAt(f, blocksOf(s)).norm(), 1e-9) << trial;
+  }
+}
+
+TEST(StaticReprojectionFactor, KnownPerturbationGivesTheExpectedWhitenedPixelError) {
+  // Body = camera = world at i; a point 4 m straight ahead, seen at the principal point from
+  // both frames. Moving frame j 0.2 m to the right (camera x) moves the prediction
+  // fx * 0.2 / 4 pixels to the left, so observed - predicted = +fx * 0.05 / sigma in u.
+  const PinholeCamera cam = testCamera();
+  const double sigma = 1.5;
+  const Eigen::Vector2d centre(cam.cx, cam.cy);
+  const StaticReprojectionFactor f(cam, centre, centre, sigma);
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d moved = I;
+  moved.translation().x() = 0.2;
+  EXPECT_LT(residualAt(f, {poseBlock(I), poseBlock(I), poseBlock(I), {0.25}}).norm(), 1e-12);
+  const Eigen::Vector2d r = residualAt(f, {poseBlock(I), poseBlock(moved), poseBlock(I), {0.25}});
+  EXPECT_NEAR(r.x(), cam.fx * 0.05 / sigma, 1e-9);
+  EXPECT_NEAR(r.y(), 0.0, 1e-12);
+  // Along the optical axis nothing moves, whatever the depth.
+  EXPECT_LT(residualAt(f, {poseBlock(I), poseBlock(I), poseBlock(I), {0.9}}).norm(), 1e-12);
+}
+
+TEST(StaticReprojectionFactor, RefusesPointsBehindTheCameraAndNonPositiveInverseDepth) {
+  const PinholeCamera cam = testCamera();
+  const StaticReprojectionFactor f(cam, {cam.cx, cam.cy}, {cam.cx, cam.cy}, 1.5);
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d ahead = I;
+  ahead.translation().z() = 5.0;  // camera j beyond the point (4 m): the point is behind it
+  std::vector<std::vector<double>> b = {poseBlock(I), poseBlock(ahead), poseBlock(I), {0.25}};
+  std::vector<double*> p;
+  for (auto& x : b) p.push_back(x.data());
+  double r[2];
+  EXPECT_FALSE(f.Evaluate(p.data(), r, nullptr));
+  b[1] = poseBlock(I);
+  b[3][0] = 0.0;
+  EXPECT_FALSE(f.Evaluate(p.data(), r, nullptr));
+}
