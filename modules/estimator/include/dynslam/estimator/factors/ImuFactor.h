@@ -1,0 +1,38 @@
+#pragma once
+// r_b of method.md section 5: the IMU preintegration residual between keyframes i and j (as
+// VINS-Mono's IMUFactor), 15 rows [dp, dtheta, dv, dba, dbg] whitened by the square root of
+// the preintegrated covariance's inverse.
+// Parameter blocks (StateBlocks.h): pose_i (7), speed-bias_i (9), pose_j (7), speed-bias_j (9).
+//   r_p  = R_i^T (p_j - p_i - v_i T - 1/2 g T^2) - alpha(ba_i, bg_i)
+//   r_th = 2 vec(gamma(bg_i)^-1 R_i^T R_j)
+//   r_v  = R_i^T (v_j - v_i - g T) - beta(ba_i, bg_i)
+//   r_ba = ba_j - ba_i,  r_bg = bg_j - bg_i
+// The bias corrections of alpha, beta, gamma are first-order (ImuPreintegration); the window
+// repropagates the preintegration between solves when the bias moves far (it is not done here:
+// Evaluate is const and runs on several threads).
+#include <dynslam/estimator/imu/ImuPreintegration.h>
+
+#include <ceres/sized_cost_function.h>
+
+#include <memory>
+
+namespace dynslam::estimator {
+
+class ImuFactor : public ceres::SizedCostFunction<15, 7, 9, 7, 9> {
+ public:
+  /// `gravity`: the world gravity vector g_w, e.g. (0, 0, -9.81).
+  ImuFactor(std::shared_ptr<const ImuPreintegration> preintegration,
+            const Eigen::Vector3d& gravity);
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
+
+  const ImuPreintegration& preintegration() const { return *preintegration_; }
+
+ private:
+  std::shared_ptr<const ImuPreintegration> preintegration_;
+  Eigen::Vector3d gravity_;
+  Eigen::Matrix<double, 15, 15> sqrt_information_;
+};
+
+}  // namespace dynslam::estimator
