@@ -4,6 +4,9 @@
 #include <dynslam/estimator/StateBlocks.h>
 #include <dynslam/estimator/factors/PinholeProjection.h>
 
+#include <ceres/cost_function.h>
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -50,6 +53,47 @@ inline Eigen::Isometry3d randomExtrinsic(std::mt19937& rng) {
 inline Eigen::Vector3d randomPointInView(std::mt19937& rng, const PinholeCamera& cam) {
   std::uniform_real_distribution<double> u(20, 620), v(20, 460), d(1.0, 6.0);
   return cam.bearing({u(rng), v(rng)}) * d(rng);
+}
+
+/// The factor's residual at the given block values (Evaluate must succeed).
+template <int N>
+Eigen::Matrix<double, N, 1> residualAt(const ceres::CostFunction& f,
+                                       std::vector<std::vector<double>> blocks) {
+  std::vector<double*> p;
+  for (auto& x : blocks) p.push_back(x.data());
+  Eigen::Matrix<double, N, 1> r;
+  EXPECT_TRUE(f.Evaluate(p.data(), r.data(), nullptr));
+  return r;
+}
+
+/// A static feature seen from two keyframes i and j (StaticReprojectionFactor's geometry).
+struct StaticScene {
+  Eigen::Isometry3d T_wbi, T_wbj, T_bc;
+  Eigen::Vector2d pixel_i, pixel_j;  ///< pixel_j exact (noise added by the tests that want it)
+  double inverse_depth = 0;  ///< in camera i
+  double depth_j = 0;        ///< the point's depth in camera j
+};
+
+inline StaticScene randomStaticScene(std::mt19937& rng) {
+  const PinholeCamera cam = testCamera();
+  for (;;) {
+    StaticScene s;
+    s.T_wbi = randomPose(rng, 5.0, M_PI);
+    s.T_bc = randomExtrinsic(rng);
+    s.T_wbj = s.T_wbi * randomPose(rng, 0.3, 0.2);
+    const Eigen::Vector3d p_ci = randomPointInView(rng, cam);
+    s.pixel_i = cam.project(p_ci);
+    s.inverse_depth = 1.0 / p_ci.z();
+    const Eigen::Vector3d p_cj = s.T_bc.inverse() * s.T_wbj.inverse() * s.T_wbi * s.T_bc * p_ci;
+    if (p_cj.z() < 0.5) continue;  // keep it well in front of camera j
+    s.pixel_j = cam.project(p_cj);
+    s.depth_j = p_cj.z();
+    return s;
+  }
+}
+
+inline std::vector<std::vector<double>> blocksOf(const StaticScene& s) {
+  return {poseBlock(s.T_wbi), poseBlock(s.T_wbj), poseBlock(s.T_bc), {s.inverse_depth}};
 }
 
 }  // namespace dynslam::estimator::testing

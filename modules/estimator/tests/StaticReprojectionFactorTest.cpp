@@ -8,45 +8,6 @@
 using namespace dynslam::estimator;
 using namespace dynslam::estimator::testing;
 
-namespace {
-
-struct StaticScene {
-  Eigen::Isometry3d T_wbi, T_wbj, T_bc;
-  Eigen::Vector2d pixel_i, pixel_j;  ///< pixel_j exact (noise added by the tests that want it)
-  double inverse_depth = 0;
-};
-
-StaticScene randomStaticScene(std::mt19937& rng) {
-  const PinholeCamera cam = testCamera();
-  for (;;) {
-    StaticScene s;
-    s.T_wbi = randomPose(rng, 5.0, M_PI);
-    s.T_bc = randomExtrinsic(rng);
-    s.T_wbj = s.T_wbi * randomPose(rng, 0.3, 0.2);
-    const Eigen::Vector3d p_ci = randomPointInView(rng, cam);
-    s.pixel_i = cam.project(p_ci);
-    s.inverse_depth = 1.0 / p_ci.z();
-    const Eigen::Vector3d p_cj = s.T_bc.inverse() * s.T_wbj.inverse() * s.T_wbi * s.T_bc * p_ci;
-    if (p_cj.z() < 0.5) continue;  // keep it well in front of camera j
-    s.pixel_j = cam.project(p_cj);
-    return s;
-  }
-}
-
-std::vector<std::vector<double>> blocksOf(const StaticScene& s) {
-  return {poseBlock(s.T_wbi), poseBlock(s.T_wbj), poseBlock(s.T_bc), {s.inverse_depth}};
-}
-
-Eigen::Vector2d residualAt(const ceres::CostFunction& f, std::vector<std::vector<double>> b) {
-  std::vector<double*> p;
-  for (auto& x : b) p.push_back(x.data());
-  Eigen::Vector2d r;
-  EXPECT_TRUE(f.Evaluate(p.data(), r.data(), nullptr));
-  return r;
-}
-
-}  // namespace
-
 TEST(StaticReprojectionFactor, AnalyticJacobianMatchesNumericAtRandomStates) {
   std::mt19937 rng(11);
   std::normal_distribution<double> pixelNoise(0.0, 3.0);
@@ -68,7 +29,7 @@ TEST(StaticReprojectionFactor, ResidualIsZeroAtTheTrueState) {
   for (int trial = 0; trial < 10; ++trial) {
     const StaticScene s = randomStaticScene(rng);
     const StaticReprojectionFactor f(testCamera(), s.pixel_i, s.pixel_j, 1.5);
-    EXPECT_LT(residualAt(f, blocksOf(s)).norm(), 1e-9) << trial;
+    EXPECT_LT(residualAt<2>(f, blocksOf(s)).norm(), 1e-9) << trial;
   }
 }
 
@@ -83,12 +44,12 @@ TEST(StaticReprojectionFactor, KnownPerturbationGivesTheExpectedWhitenedPixelErr
   const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d moved = I;
   moved.translation().x() = 0.2;
-  EXPECT_LT(residualAt(f, {poseBlock(I), poseBlock(I), poseBlock(I), {0.25}}).norm(), 1e-12);
-  const Eigen::Vector2d r = residualAt(f, {poseBlock(I), poseBlock(moved), poseBlock(I), {0.25}});
+  EXPECT_LT(residualAt<2>(f, {poseBlock(I), poseBlock(I), poseBlock(I), {0.25}}).norm(), 1e-12);
+  const Eigen::Vector2d r = residualAt<2>(f, {poseBlock(I), poseBlock(moved), poseBlock(I), {0.25}});
   EXPECT_NEAR(r.x(), cam.fx * 0.05 / sigma, 1e-9);
   EXPECT_NEAR(r.y(), 0.0, 1e-12);
   // Along the optical axis nothing moves, whatever the depth.
-  EXPECT_LT(residualAt(f, {poseBlock(I), poseBlock(I), poseBlock(I), {0.9}}).norm(), 1e-12);
+  EXPECT_LT(residualAt<2>(f, {poseBlock(I), poseBlock(I), poseBlock(I), {0.9}}).norm(), 1e-12);
 }
 
 TEST(StaticReprojectionFactor, RefusesPointsBehindTheCameraAndNonPositiveInverseDepth) {
