@@ -1,0 +1,48 @@
+#pragma once
+// Marginalisation by Schur complement (method.md section 5, as VINS-Fusion's
+// MarginalizationInfo): the factors that touch the states leaving the window are linearised at
+// the current values, the leaving states are eliminated from their normal equations, and what
+// remains becomes one MarginalizationFactor on the states that stay.
+//
+// Robust losses are linearised the way Ceres does it (Triggs' correction), so a down-weighted
+// outlier stays down-weighted in the prior.
+#include <dynslam/estimator/factors/MarginalizationFactor.h>
+
+#include <ceres/cost_function.h>
+#include <ceres/loss_function.h>
+
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace dynslam::estimator {
+
+class Marginalizer {
+ public:
+  /// A factor touching some of the states; `loss` may be null (not owned: keep it alive until
+  /// marginalize() returns). The block pointers must hold the current values.
+  void addFactor(std::shared_ptr<const ceres::CostFunction> cost, const ceres::LossFunction* loss,
+                 std::vector<double*> blocks);
+  /// Declares a block as a pose on PoseManifold (6 tangent coordinates).
+  void setPoseBlock(const double* block) { poses_.insert(block); }
+
+  struct Prior {
+    std::shared_ptr<MarginalizationFactor> factor;  ///< null when nothing stays connected
+    std::vector<double*> blocks;                    ///< the blocks it constrains, in order
+  };
+
+  /// Eliminates the blocks in `leaving` and returns the prior on every other block the factors
+  /// touch. Eigenvalues below `eps` (relative to the largest) are treated as zero, as VINS does.
+  Prior marginalize(const std::set<const double*>& leaving, double eps = 1e-8) const;
+
+ private:
+  struct Factor {
+    std::shared_ptr<const ceres::CostFunction> cost;
+    const ceres::LossFunction* loss;
+    std::vector<double*> blocks;
+  };
+  std::vector<Factor> factors_;
+  std::set<const double*> poses_;
+};
+
+}  // namespace dynslam::estimator

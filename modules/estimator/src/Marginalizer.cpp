@@ -1,0 +1,127 @@
+#include "dynslam/estimator/Marginalizer.h"
+
+#include "dynslam/estimator/StateBlocks.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <map>
+#include <stdexcept>
+
+namespace dynslam::estimator {
+namespace {
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// Ceres' robust-loss correction (Triggs et al.): scales the residual and Jacobian so that the
+/// Gauss-Newton model of rho(|r|^2) is |J' dx + r'|^2.
+void applyLoss(const ceres::LossFunction& loss, Eigen::VectorXd& r, Eigen::MatrixXd& J) {
+  const double sq = r.squaredNorm();
+  double rho[3];
+  loss.Evaluate(sq, rho);
+  const double sqrtRho1 = std::sqrt(rho[1]);
+  double residualScale = sqrtRho1, alphaSq = 0;
+  if (sq > 0 && rho[2] > 0) {
+    const double D = 1.0 + 2.0 * sq * rho[2] / rho[1];
+    const double alpha = 1.0 - std::sqrt(D);
+    residualScale = sqrtRho1 / (1.0 - alpha);
+    alphaSq = alpha / sq;
+  }
+  J = sqrtRho1 * (J - alphaSq * r * (r.transpose() * J));
+  r *= residualScale;
+}
+
+}  // namespace
+
+void Marginalizer::addFactor(std::shared_ptr<const ceres::CostFunction> cost,
+                             const ceres::LossFunction* loss, std::vector<double*> blocks) {
+  if (int(blocks.size()) != int(cost->parameter_block_sizes().size()))
+    throw std::invalid_argument("Marginalizer::addFactor: block count does not match the factor");
+  factors_.push_back({std::move(cost), loss, std::move(blocks)});
+}
+
+Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& leaving,
+                                              double eps) const {
+  // Columns: leaving blocks first, then the staying ones, each in order of first appearance.
+  struct Column {
+    int ambient = 0, tangent = 0, offset = 0;
+    bool pose = false;
+  };
+  std::map<const double*, Column> columns;
+  std::vector<double*> order[2];  // [0] leaving, [1] staying
+  for (const auto& f : factors_)
+    for (size_t k = 0; k < f.blocks.size(); ++k) {
+      double* b = f.blocks[k];
+      if (columns.count(b)) continue;
+      Column c;
+      c.ambient = f.cost->parameter_block_sizes()[k];
+      c.pose = poses_.count(b) > 0;
+      c.tangent = c.pose ? kPoseTangentSize : c.ambient;
+      columns[b] = c;
+      order[leaving.count(b) ? 0 : 1].push_back(b);
+    }
+  int m = 0, n = 0;
+  for (int side = 0; side < 2; ++side)
+    for (double* b : order[side]) {
+      columns[b].offset = m + n;
+      (side == 0 ? m : n) += columns[b].tangent;
+    }
+
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + n, m + n);
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(m + n);
+  for (const auto& f : factors_) {
+    const int rows = f.cost->num_residuals();
+    Eigen::VectorXd r(rows);
+    std::vector<RowMajor> jac;
+    std::vector<double*> jacPtr;
+    for (double* b : f.blocks) jac.emplace_back(rows, columns[b].ambient);
+    for (auto& j : jac) jacPtr.push_back(j.data());
+    if (!f.cost->Evaluate(f.blocks.data(), r.data(), jacPtr.data()))
+      throw std::runtime_error("Marginalizer: a factor failed to evaluate");
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, m + n);
+    for (size_t k = 0; k < f.blocks.size(); ++k) {
+      const Column& c = columns[f.blocks[k]];
+      J.middleCols(c.offset, c.tangent) = jac[k].leftCols(c.tangent);  // tangent part
+    }
+    if (f.loss) applyLoss(*f.loss, r, J);
+    H.noalias() += J.transpose() * J;
+    g.noalias() += J.transpose() * r;
+  }
+
+  Prior prior;
+  if (n == 0) return prior;
+  // Schur complement of the leaving block, with a pseudo-inverse (its information can be
+  // rank-deficient, e.g. an unobserved yaw).
+  const auto pseudoInverse = [eps](const Eigen::MatrixXd& A) {
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
+    const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
+    const Eigen::VectorXd inv =
+        (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
+    return Eigen::MatrixXd(es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose());
+  };
+  const Eigen::MatrixXd Hmm_inv = m > 0 ? pseudoInverse(H.topLeftCorner(m, m)) : Eigen::MatrixXd();
+  Eigen::MatrixXd A = H.bottomRightCorner(n, n);
+  Eigen::VectorXd b = g.tail(n);
+  if (m > 0) {
+    A -= H.bottomLeftCorner(n, m) * Hmm_inv * H.topRightCorner(m, n);
+    b -= H.bottomLeftCorner(n, m) * Hmm_inv * g.head(m);
+  }
+  // A = V S V^T -> J = S^1/2 V^T, r0 = S^-1/2 V^T b, so |J dx + r0|^2 = dx^T A dx + 2 b^T dx + c.
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
+  const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
+  const Eigen::VectorXd S = (es.eigenvalues().array() > floor).select(es.eigenvalues(), 0.0);
+  const Eigen::VectorXd Sinv =
+      (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
+  const Eigen::MatrixXd J = S.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose();
+  const Eigen::VectorXd r0 = Sinv.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() * b;
+
+  std::vector<PriorBlock> blocks;
+  for (double* block : order[1]) {
+    const Column& c = columns[block];
+    blocks.push_back({c.ambient, c.pose, std::vector<double>(block, block + c.ambient)});
+    prior.blocks.push_back(block);
+  }
+  prior.factor = std::make_shared<MarginalizationFactor>(std::move(blocks), J, r0);
+  return prior;
+}
+
+}  // namespace dynslam::estimator
