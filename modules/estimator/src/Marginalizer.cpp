@@ -51,7 +51,7 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
   for (const auto& f : factors_)
     for (size_t k = 0; k < f.blocks.size(); ++k) {
       double* b = f.blocks[k];
-      if (columns.count(b)) continue;
+      if (columns.count(b) || constants_.count(b)) continue;
       Column c;
       c.ambient = f.cost->parameter_block_sizes()[k];
       c.pose = poses_.count(b) > 0;
@@ -73,12 +73,14 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
     Eigen::VectorXd r(rows);
     std::vector<RowMajor> jac;
     std::vector<double*> jacPtr;
-    for (double* b : f.blocks) jac.emplace_back(rows, columns[b].ambient);
+    for (size_t k = 0; k < f.blocks.size(); ++k)
+      jac.emplace_back(rows, f.cost->parameter_block_sizes()[k]);
     for (auto& j : jac) jacPtr.push_back(j.data());
     if (!f.cost->Evaluate(f.blocks.data(), r.data(), jacPtr.data()))
       throw std::runtime_error("Marginalizer: a factor failed to evaluate");
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, m + n);
     for (size_t k = 0; k < f.blocks.size(); ++k) {
+      if (constants_.count(f.blocks[k])) continue;
       const Column& c = columns[f.blocks[k]];
       J.middleCols(c.offset, c.tangent) = jac[k].leftCols(c.tangent);  // tangent part
     }

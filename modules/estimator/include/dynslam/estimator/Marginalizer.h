@@ -25,6 +25,9 @@ class Marginalizer {
                  std::vector<double*> blocks);
   /// Declares a block as a pose on PoseManifold (6 tangent coordinates).
   void setPoseBlock(const double* block) { poses_.insert(block); }
+  /// Declares a block held constant in the problem (e.g. a calibrated extrinsic): it is neither
+  /// eliminated nor kept, its Jacobian columns are dropped.
+  void setConstantBlock(const double* block) { constants_.insert(block); }
 
   struct Prior {
     std::shared_ptr<MarginalizationFactor> factor;  ///< null when nothing stays connected
@@ -42,7 +45,7 @@ class Marginalizer {
     std::vector<double*> blocks;
   };
   std::vector<Factor> factors_;
-  std::set<const double*> poses_;
+  std::set<const double*> poses_, constants_;
 };
 
 }  // namespace dynslam::estimator

@@ -1,0 +1,116 @@
+#pragma once
+// The sliding-window factor graph (method.md section 5): the last `window_size` keyframes'
+// states, the static landmarks they observe, the IMU preintegration between consecutive
+// keyframes (or, without an IMU, a constant-motion prior on the keyframe poses), and the prior
+// left by marginalised keyframes. Each new keyframe: build the Ceres problem, solve it within
+// the iteration and time limits, and when the window is full marginalise the oldest keyframe
+// (Schur complement, Marginalizer) into the prior.
+//
+// Factors (one per file in factors/): StaticReprojectionFactor (Huber loss) and
+// DepthMeasurementFactor / TransferredDepthFactor per static landmark, ImuFactor, the motion
+// prior (RigidSmoothMotionFactor on the body poses), MarginalizationFactor.
+#include <dynslam/estimator/LandmarkTable.h>
+#include <dynslam/estimator/factors/DepthMeasurementFactor.h>
+#include <dynslam/estimator/factors/MarginalizationFactor.h>
+#include <dynslam/estimator/factors/PinholeProjection.h>
+#include <dynslam/estimator/imu/ImuPreintegration.h>
+
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <vector>
+
+namespace dynslam::estimator {
+
+struct SlidingWindowParams {
+  int window_size = 10;            ///< keyframes in the window
+  int max_iterations = 10;         ///< Ceres iterations per keyframe
+  double max_solver_time_s = 0.05; ///< Ceres wall-time limit per keyframe
+  double pixel_sigma = 1.0;        ///< px, reprojection noise
+  double huber_sigmas = 2.0;       ///< Huber threshold on whitened reprojection residuals
+  DepthNoiseModel depth_noise;
+  bool transferred_depth = true;   ///< depth measured in later keyframes constrains them too
+  bool use_imu = true;             ///< false: RGB-D only, motion prior between keyframes
+  ImuNoise imu_noise;
+  Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
+  /// RGB-D only: sigmas of the constant-motion prior per keyframe interval (m, rad).
+  double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
+};
+
+struct FeatureObservation {
+  std::int64_t id = -1;
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
+  double depth = 0;  ///< m; 0 = none
+};
+
+struct KeyframeInput {
+  double t = 0;
+  Eigen::Isometry3d T_world_body = Eigen::Isometry3d::Identity();  ///< initial guess
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();              ///< initial guess (IMU)
+  std::vector<FeatureObservation> features;                        ///< static features
+  /// IMU mode: the preintegration from the previous keyframe to this one (null for the first).
+  std::shared_ptr<ImuPreintegration> preintegration;
+};
+
+struct SolveReport {
+  int iterations = 0;
+  double solve_ms = 0;
+  int landmarks = 0;     ///< landmarks with factors in the problem
+  double final_cost = 0;
+  bool usable = true;
+};
+
+class SlidingWindow {
+ public:
+  SlidingWindow(const SlidingWindowParams& params, const PinholeCamera& camera,
+                const Eigen::Isometry3d& T_body_camera);
+  ~SlidingWindow();
+
+  /// Adds a keyframe (biases start from the previous keyframe's), solves, and marginalises the
+  /// oldest keyframe when there are more than window_size.
+  SolveReport addKeyframe(const KeyframeInput& input);
+
+  bool empty() const { return keyframes_.empty(); }
+  std::size_t size() const { return keyframes_.size(); }
+  double latestTime() const;
+  Eigen::Isometry3d latestPose() const;
+  Eigen::Vector3d latestVelocity() const;
+  Eigen::Vector3d latestAccBias() const;
+  Eigen::Vector3d latestGyroBias() const;
+
+  /// World positions of the landmarks seen in at least two keyframes, for tracking frames
+  /// between keyframes.
+  std::vector<std::pair<std::int64_t, Eigen::Vector3d>> landmarkPositions() const;
+
+ private:
+  struct Keyframe {
+    std::int64_t id = 0;
+    double t = 0;
+    double pose[7];
+    double speed_bias[9];
+    std::shared_ptr<ImuPreintegration> preintegration;  // from the previous keyframe
+  };
+  struct Prior {
+    std::shared_ptr<MarginalizationFactor> factor;
+    std::vector<double*> blocks;
+  };
+  class ProblemBuilder;
+
+  SolveReport solve();
+  void marginalizeOldest();
+  Eigen::Vector3d landmarkWorld(const Landmark& l) const;
+  Keyframe* keyframe(std::int64_t id);
+  const Keyframe* keyframe(std::int64_t id) const;
+
+  SlidingWindowParams params_;
+  PinholeCamera camera_;
+  double extrinsic_[7];
+  std::deque<Keyframe> keyframes_;
+  std::int64_t next_id_ = 0;
+  LandmarkTable landmarks_;
+  Prior prior_;
+};
+
+}  // namespace dynslam::estimator

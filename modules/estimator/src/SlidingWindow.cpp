@@ -1,0 +1,246 @@
+#include "dynslam/estimator/SlidingWindow.h"
+
+#include "dynslam/estimator/Marginalizer.h"
+#include "dynslam/estimator/StateBlocks.h"
+#include "dynslam/estimator/factors/ImuFactor.h"
+#include "dynslam/estimator/factors/RigidSmoothMotionFactor.h"
+#include "dynslam/estimator/factors/StaticReprojectionFactor.h"
+#include "dynslam/estimator/factors/TransferredDepthFactor.h"
+
+#include <ceres/ceres.h>
+
+#include <functional>
+#include <set>
+#include <stdexcept>
+
+namespace dynslam::estimator {
+
+using FactorSink = std::function<void(std::shared_ptr<const ceres::CostFunction>,
+                                      const ceres::LossFunction*, std::vector<double*>)>;
+
+/// Lists the window's factors: all of them (for a solve) or only those touching one keyframe
+/// (for its marginalisation), so the two cannot disagree on what the graph holds.
+class SlidingWindow::ProblemBuilder {
+ public:
+  ProblemBuilder(SlidingWindow& w) : w_(w), huber_(w.params_.huber_sigmas) {}
+
+  /// `only`: a keyframe id, or -1 for every factor. Returns the landmarks given factors.
+  int forEachFactor(std::int64_t only, const FactorSink& sink) {
+    int landmarks = 0;
+    for (auto& [id, l] : w_.landmarks_.all()) landmarks += landmarkFactors(l, only, sink);
+    for (size_t k = 1; k < w_.keyframes_.size(); ++k) {
+      Keyframe& a = w_.keyframes_[k - 1];
+      Keyframe& b = w_.keyframes_[k];
+      if (w_.params_.use_imu && b.preintegration) {
+        if (only < 0 || only == a.id || only == b.id)
+          sink(std::make_shared<ImuFactor>(b.preintegration, w_.params_.gravity), nullptr,
+               {a.pose, a.speed_bias, b.pose, b.speed_bias});
+      } else if (!w_.params_.use_imu && k >= 2) {
+        Keyframe& z = w_.keyframes_[k - 2];
+        if (only < 0 || only == z.id || only == a.id || only == b.id)
+          sink(std::make_shared<RigidSmoothMotionFactor>(
+                   w_.params_.motion_prior_sigma_translation,
+                   w_.params_.motion_prior_sigma_rotation),
+               nullptr, {z.pose, a.pose, b.pose});
+      }
+    }
+    if (w_.prior_.factor) sink(w_.prior_.factor, nullptr, w_.prior_.blocks);
+    return landmarks;
+  }
+
+ private:
+  /// The factors of one landmark: the depth at its anchor, and per later observation the
+  /// reprojection and (optionally) the depth there. Observations the current estimate puts
+  /// behind a camera are left out (the factor cannot be evaluated there).
+  int landmarkFactors(Landmark& l, std::int64_t only, const FactorSink& sink) {
+    if (l.observations.size() < 2 || l.inverse_depth <= 0) return 0;
+    Keyframe* anchor = w_.keyframe(l.anchor);
+    if (!anchor) return 0;
+    const bool touchesOnly = only < 0 || only == l.anchor;
+    const LandmarkObservation& a = l.anchorObservation();
+    const Eigen::Vector3d world = w_.landmarkWorld(l);
+    const Eigen::Isometry3d T_bc = poseFromBlock(w_.extrinsic_);
+    int used = 0;
+    for (auto& [kf, obs] : l.observations) {
+      if (kf == l.anchor) continue;
+      Keyframe* k = w_.keyframe(kf);
+      if (!k) continue;
+      const Eigen::Vector3d inCamera = (poseFromBlock(k->pose) * T_bc).inverse() * world;
+      if (inCamera.z() < 0.05) continue;
+      ++used;
+      if (!touchesOnly && only != kf) continue;
+      sink(std::make_shared<StaticReprojectionFactor>(w_.camera_, a.pixel, obs.pixel,
+                                                      w_.params_.pixel_sigma),
+           &huber_, {anchor->pose, k->pose, w_.extrinsic_, &l.inverse_depth});
+      if (w_.params_.transferred_depth && obs.depth > 0)
+        sink(std::make_shared<TransferredDepthFactor>(w_.camera_, a.pixel, obs.depth,
+                                                      w_.params_.depth_noise),
+             &huber_, {anchor->pose, k->pose, w_.extrinsic_, &l.inverse_depth});
+    }
+    if (used == 0) return 0;
+    if (a.depth > 0 && touchesOnly)
+      sink(std::make_shared<DepthMeasurementFactor>(a.depth, w_.params_.depth_noise), nullptr,
+           {&l.inverse_depth});
+    return 1;
+  }
+
+  SlidingWindow& w_;
+  ceres::HuberLoss huber_;
+};
+
+SlidingWindow::SlidingWindow(const SlidingWindowParams& params, const PinholeCamera& camera,
+                             const Eigen::Isometry3d& T_body_camera)
+    : params_(params), camera_(camera) {
+  if (params_.window_size < 2)
+    throw std::invalid_argument("SlidingWindow: window_size must be >= 2");
+  poseToBlock(T_body_camera, extrinsic_);
+}
+
+SlidingWindow::~SlidingWindow() = default;
+
+SlidingWindow::Keyframe* SlidingWindow::keyframe(std::int64_t id) {
+  if (keyframes_.empty() || id < keyframes_.front().id || id > keyframes_.back().id)
+    return nullptr;
+  return &keyframes_[size_t(id - keyframes_.front().id)];
+}
+
+const SlidingWindow::Keyframe* SlidingWindow::keyframe(std::int64_t id) const {
+  return const_cast<SlidingWindow*>(this)->keyframe(id);
+}
+
+Eigen::Vector3d SlidingWindow::landmarkWorld(const Landmark& l) const {
+  const Keyframe* anchor = keyframe(l.anchor);
+  const Eigen::Vector3d inCamera =
+      camera_.bearing(l.anchorObservation().pixel) / std::max(l.inverse_depth, 1e-6);
+  return poseFromBlock(anchor->pose) * (poseFromBlock(extrinsic_) * inCamera);
+}
+
+SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
+  if (!keyframes_.empty() && !(input.t > keyframes_.back().t))
+    throw std::invalid_argument("SlidingWindow: keyframe times must increase");
+  Keyframe k;
+  k.id = next_id_++;
+  k.t = input.t;
+  poseToBlock(input.T_world_body, k.pose);
+  for (int i = 0; i < 3; ++i) k.speed_bias[i] = input.velocity(i);
+  for (int i = 3; i < 9; ++i) k.speed_bias[i] = keyframes_.empty() ? 0.0 : keyframes_.back().speed_bias[i];
+  k.preintegration = keyframes_.empty() ? nullptr : input.preintegration;
+  if (params_.use_imu && !keyframes_.empty() && !k.preintegration)
+    throw std::invalid_argument("SlidingWindow: IMU mode needs the preintegration between keyframes");
+  keyframes_.push_back(k);
+  for (const auto& f : input.features)
+    landmarks_.observe(f.id, k.id, {f.pixel, f.depth}, 3.0);
+  SolveReport report = solve();
+  if (int(keyframes_.size()) > params_.window_size) marginalizeOldest();
+  return report;
+}
+
+SolveReport SlidingWindow::solve() {
+  // Bias estimates that moved far from a preintegration's linearisation point: integrate again.
+  if (params_.use_imu)
+    for (size_t k = 1; k < keyframes_.size(); ++k) {
+      auto& pre = keyframes_[k].preintegration;
+      const double* sb = keyframes_[k - 1].speed_bias;
+      const Eigen::Vector3d ba(sb[3], sb[4], sb[5]), bg(sb[6], sb[7], sb[8]);
+      if (pre && pre->needsRepropagation(ba, bg)) pre->repropagate(ba, bg);
+    }
+
+  ceres::Problem::Options options;
+  options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(options);
+  PoseManifold manifold;
+  std::vector<std::shared_ptr<const ceres::CostFunction>> keep;  // alive until Solve returns
+  for (auto& k : keyframes_) {
+    problem.AddParameterBlock(k.pose, 7, &manifold);
+    if (params_.use_imu) problem.AddParameterBlock(k.speed_bias, 9);
+  }
+  problem.AddParameterBlock(extrinsic_, 7, &manifold);
+  problem.SetParameterBlockConstant(extrinsic_);
+  ProblemBuilder builder(*this);
+  SolveReport report;
+  report.landmarks = builder.forEachFactor(
+      -1, [&](std::shared_ptr<const ceres::CostFunction> f, const ceres::LossFunction* loss,
+              std::vector<double*> blocks) {
+        problem.AddResidualBlock(const_cast<ceres::CostFunction*>(f.get()),
+                                 const_cast<ceres::LossFunction*>(loss), blocks);
+        keep.push_back(std::move(f));
+      });
+  for (auto& [id, l] : landmarks_.all())
+    if (problem.HasParameterBlock(&l.inverse_depth))
+      problem.SetParameterLowerBound(&l.inverse_depth, 0, 1e-3);
+  // Gauge: without a prior the first keyframe is held (with an IMU, roll and pitch would be
+  // observable, but yaw and position are not).
+  if (!prior_.factor) problem.SetParameterBlockConstant(keyframes_.front().pose);
+  if (keyframes_.size() < 2) return report;
+
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_SCHUR;
+  solver.trust_region_strategy_type = ceres::DOGLEG;
+  solver.max_num_iterations = params_.max_iterations;
+  solver.max_solver_time_in_seconds = params_.max_solver_time_s;
+  solver.num_threads = 2;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  report.iterations = int(summary.iterations.size());
+  report.solve_ms = 1000.0 * summary.total_time_in_seconds;
+  report.final_cost = summary.final_cost;
+  report.usable = summary.IsSolutionUsable();
+  return report;
+}
+
+void SlidingWindow::marginalizeOldest() {
+  Keyframe& oldest = keyframes_.front();
+  Marginalizer marginalizer;
+  for (auto& k : keyframes_) marginalizer.setPoseBlock(k.pose);
+  marginalizer.setConstantBlock(extrinsic_);
+  // The first marginalisation: the solves held the oldest pose fixed (the gauge), so the prior
+  // is conditioned on it rather than eliminating it; otherwise the prior would carry no absolute
+  // information and the window would drift in the unobservable directions (VINS-Fusion instead
+  // moves the whole window back after each solve).
+  if (!prior_.factor) marginalizer.setConstantBlock(oldest.pose);
+  ProblemBuilder builder(*this);
+  std::set<const double*> leaving = {oldest.pose, oldest.speed_bias};
+  builder.forEachFactor(oldest.id, [&](std::shared_ptr<const ceres::CostFunction> f,
+                                       const ceres::LossFunction* loss,
+                                       std::vector<double*> blocks) {
+    marginalizer.addFactor(std::move(f), loss, blocks);
+  });
+  for (auto& [id, l] : landmarks_.all())
+    if (l.anchor == oldest.id) leaving.insert(&l.inverse_depth);
+  const auto prior = marginalizer.marginalize(leaving);
+  prior_ = {prior.factor, prior.blocks};
+
+  // Landmarks anchored at the oldest keyframe move to their next keyframe.
+  landmarks_.removeKeyframe(oldest.id, [&](const Landmark& l, std::int64_t next) {
+    const Eigen::Vector3d world = landmarkWorld(l);
+    const Keyframe* k = keyframe(next);
+    const double z = ((poseFromBlock(k->pose) * poseFromBlock(extrinsic_)).inverse() * world).z();
+    return z > 0.05 ? 1.0 / z : 1.0 / 3.0;
+  });
+  keyframes_.pop_front();
+}
+
+double SlidingWindow::latestTime() const { return keyframes_.back().t; }
+Eigen::Isometry3d SlidingWindow::latestPose() const {
+  return poseFromBlock(keyframes_.back().pose);
+}
+Eigen::Vector3d SlidingWindow::latestVelocity() const {
+  return Eigen::Vector3d(keyframes_.back().speed_bias);
+}
+Eigen::Vector3d SlidingWindow::latestAccBias() const {
+  return Eigen::Vector3d(keyframes_.back().speed_bias + 3);
+}
+Eigen::Vector3d SlidingWindow::latestGyroBias() const {
+  return Eigen::Vector3d(keyframes_.back().speed_bias + 6);
+}
+
+std::vector<std::pair<std::int64_t, Eigen::Vector3d>> SlidingWindow::landmarkPositions() const {
+  std::vector<std::pair<std::int64_t, Eigen::Vector3d>> out;
+  for (const auto& [id, l] : landmarks_.all())
+    if (l.observations.size() >= 2 && keyframe(l.anchor)) out.emplace_back(id, landmarkWorld(l));
+  return out;
+}
+
+}  // namespace dynslam::estimator
