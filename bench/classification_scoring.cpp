@@ -36,6 +36,8 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     fp += !truthDynamic && predicted;
     fn += truthDynamic && !predicted;
     tn += !truthDynamic && !predicted;
+    if (!truthDynamic && predicted) ++(row ? fpNonMovingObject : fpBackground);
+    if (truthDynamic && !predicted) ++(f.object_id < 0 ? fnNoObject : fnJudgedStatic);
     if (row) {
       ++perObject[label].first;
       perObject[label].second += !predicted;

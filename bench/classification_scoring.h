@@ -28,6 +28,10 @@ struct Truth {
 
 struct ClassificationScore {
   size_t tp = 0, fp = 0, fn = 0, tn = 0;
+  /// Where the errors come from: false positives on background pixels (a mask or a carried
+  /// membership that took background) vs on non-moving objects (judged moving); false negatives
+  /// on features given to no object (no mask held them) vs on objects judged static.
+  size_t fpBackground = 0, fpNonMovingObject = 0, fnNoObject = 0, fnJudgedStatic = 0;
   /// category -> frames a non-moving object was seen with >= 3 features, and of those, static.
   std::map<std::string, std::pair<size_t, size_t>> nonMoving;
   std::map<std::string, std::pair<size_t, size_t>> moving;  ///< same for moving: dynamic

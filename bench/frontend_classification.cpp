@@ -214,8 +214,10 @@ void run(const Settings& s) {
     std::printf("camera motion  median error %.3f deg, %.1f mm per frame (p90 %.3f deg, %.1f mm)\n",
                 median(cameraRotErr), 1000 * median(cameraTransErr),
                 percentile(cameraRotErr, 0.9), 1000 * percentile(cameraTransErr, 0.9));
-    std::printf("dynamic class  TP %zu  FP %zu  FN %zu  TN %zu\n", score.tp, score.fp, score.fn,
-                score.tn);
+    std::printf("dynamic class  TP %zu  FP %zu (%zu background, %zu on non-moving objects)  FN %zu "
+                "(%zu on no object, %zu on objects judged static)  TN %zu\n",
+                score.tp, score.fp, score.fpBackground, score.fpNonMovingObject, score.fn,
+                score.fnNoObject, score.fnJudgedStatic, score.tn);
     printRatio("dynamic-class precision", score.precision(), 0.95, true, "");
     printRatio("dynamic-class recall", score.recall(), 0.90, true, "");
     for (const auto& [category, n] : score.nonMoving) {

@@ -31,8 +31,9 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
   return m.norm();
 }
 
-/// The median depth of the valid pixels within `half` px of `pixel` that lie on the same surface
-/// as most of the window (within 5 cm or 2 % of its median); 0 when none is valid.
+/// The median depth of the valid pixels within `half` px of `pixel` that lie on the surface of
+/// the pixel itself (within 5 cm or 2 % of its reading; of the window's median when the pixel
+/// has none); 0 when none is valid.
 float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, std::vector<double>& buf) {
   const int x0 = cvRound(pixel.x), y0 = cvRound(pixel.y);
   buf.clear();
@@ -42,7 +43,11 @@ float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, std:
       if (row[x] > 0) buf.push_back(row[x]);
   }
   if (buf.empty()) return 0;
-  const double m0 = median(buf);
+  // The surface of the feature's own pixel when it has a reading, else the window's main one.
+  const float centre = (x0 >= 0 && y0 >= 0 && x0 < depth.cols && y0 < depth.rows)
+                           ? depth.at<float>(y0, x0)
+                           : 0.f;
+  const double m0 = centre > 0 ? double(centre) : median(buf);
   const double band = std::max(0.05, 0.02 * m0);
   buf.erase(std::remove_if(buf.begin(), buf.end(), [&](double z) { return std::abs(z - m0) > band; }),
             buf.end());
@@ -88,6 +93,8 @@ void DynamicClassifier::process(core::Frame& frame) {
   std::map<int, const core::Track*> tracks;
   for (const auto& t : frame.tracks) tracks[t.id] = &t;
   std::map<int, ObjectRegion> maskless;  // tracks seen this frame without a mask
+  std::map<int, const ObjectRegion*> masked;  // tracks with a mask this frame
+  for (const auto& r : regions) masked.emplace(r.object_id, &r);
   std::map<std::int64_t, int> nextObjectOf;
   const bool windowed = params_.depth_window > 1 && !frame.depth.empty() &&
                         frame.depth.type() == CV_32FC1;
@@ -98,9 +105,15 @@ void DynamicClassifier::process(core::Frame& frame) {
     c.region = regionAt(regions, f.pixel);
     if (!c.region) {
       // No mask holds it, but it was on a tracked object last frame and that track is still
-      // there (the detector missed it: the track coasts): it stays with the object.
+      // there: it stays with the object unless the object's mask says otherwise. A mask speaks
+      // only for the pixels of its box: outside it (the detector missed the object and the
+      // track coasts, or the box was cut short by a few pixels) membership carries over.
       const auto last = objectOf_.find(f.id);
-      if (last != objectOf_.end()) {
+      const auto mask = last != objectOf_.end() ? masked.find(last->second) : masked.end();
+      const bool contradicted =
+          mask != masked.end() &&
+          mask->second->roi.contains({cvRound(f.pixel.x), cvRound(f.pixel.y)});
+      if (last != objectOf_.end() && !contradicted) {
         const auto t = tracks.find(last->second);
         if (t != tracks.end())
           c.region = &maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model})
@@ -158,6 +171,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     }
   }
   std::map<int, bool> dynamic;
+  const std::map<int, bool> previousDecision = lastDynamic_;
   for (const auto& [id, region] : seen) {
     core::ObjectMotionState s;
     s.object_id = id;
@@ -167,8 +181,24 @@ void DynamicClassifier::process(core::Frame& frame) {
       s.speed = objectSpeed(v->second, params_.speed_statistic);
       s.dynamic = s.speed > params_.speed_threshold;
     } else {
-      const auto last = lastDynamic_.find(id);
-      s.dynamic = last == lastDynamic_.end() ? true : last->second;
+      const auto last = previousDecision.find(id);
+      if (last != previousDecision.end()) {
+        s.dynamic = last->second;
+      } else {
+        // A new track (the tracker may give an object a new id): its features' objects of the
+        // last frame vote; without votes it is not dynamic (no scene flow says it moves).
+        int votes = 0, dynamicVotes = 0;
+        for (size_t i = 0; i < frame.features.size(); ++i) {
+          if (!cur[i].region || cur[i].region->object_id != id) continue;
+          const auto before = objectOf_.find(frame.features[i].id);
+          if (before == objectOf_.end()) continue;
+          const auto decision = previousDecision.find(before->second);
+          if (decision == previousDecision.end()) continue;
+          ++votes;
+          dynamicVotes += decision->second;
+        }
+        s.dynamic = votes > 0 && 2 * dynamicVotes >= votes;
+      }
     }
     lastDynamic_[id] = s.dynamic;
     dynamic[id] = s.dynamic;

@@ -24,14 +24,17 @@
 //    A mean of norms adds up the noise of every feature instead of averaging it out, and one
 //    feature on a depth edge (background depth on an object pixel) moves the mean by metres.
 //  - depth_window (default 5 px): a feature's 3-D point takes the median depth of the window
-//    around it (pixels on the window's main surface only), not the single reading at its
+//    around it (pixels on the surface of its own reading only), not the single reading at its
 //    pixel: with independent per-pixel noise that is 4x less noise for 25 pixels, which the
 //    speed of a standing person and the rotation of a rigid set both need. 1: the reading.
 // A feature that no mask holds but that was on a tracked object in the previous frame stays
-// with that object while its track lives (the detector missed it this frame, the track coasts).
-// An object whose features have no flow yet (it has just appeared) keeps its last decision, or
-// counts as dynamic when it has none: it is not trusted to constrain the camera before it was
-// seen to stand still.
+// with that object while its track lives, unless the object's mask box holds the pixel (then the
+// mask says the feature left it): a detector miss (the track coasts) or a box a few pixels
+// short does not throw the object's features into the background.
+// An object whose features have no flow yet (it has just appeared) keeps its last decision;
+// a new track takes the majority decision of the objects its features were on in the last frame
+// (trackers re-number objects); without either it counts as dynamic: it is not trusted to
+// constrain the camera before it was seen to stand still.
 #include <dynslam/core/Frame.h>
 #include <dynslam/frontend/CameraMotion.h>
 #include <dynslam/frontend/RigidPointSet.h>
