@@ -1,0 +1,111 @@
+#pragma once
+// Sparse feature tracking (method.md section 3, as VINS-Fusion's feature tracker does it):
+// Shi-Tomasi corners spread over a grid with a minimum spacing, pyramidal KLT optical flow
+// whose search starts where the gyro's rotation (infinite homography) or else the point's own
+// previous motion puts it, a forward-backward check, RANSAC on the fundamental matrix for the
+// static candidates, and the depth image's value at each corner. Ids are stable while a corner
+// is tracked and never reused. OpenCV and Eigen only.
+#include <dynslam/core/Frame.h>
+#include <dynslam/frontend/GridCornerDetector.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dynslam::frontend {
+
+/// Where the KLT search of each point starts.
+enum class FlowInit {
+  Gyro,            ///< the gyro's rotation over the interval (K R K^-1); previous motion without
+  PreviousMotion,  ///< the point's displacement in the previous interval (constant velocity)
+  None,            ///< the point's previous pixel (plain pyramidal KLT)
+};
+
+/// "gyro", "previous_motion", "none"; std::invalid_argument naming the text otherwise.
+FlowInit flowInitFromString(const std::string& text);
+std::string toString(FlowInit init);
+
+struct FeatureTrackerParams {
+  int max_features = 150;      ///< tracked + new corners per frame
+  GridCornerParams corners;    ///< spacing, Shi-Tomasi quality, grid
+  int klt_window_px = 15;      ///< KLT window side, pixels (odd); 21 costs 1.5x, tracks no better
+  int klt_pyramid_levels = 3;  ///< pyramid levels above the image without a prediction (0: none)
+  /// Levels when the search starts at a predicted pixel (gyro or previous motion): the
+  /// prediction leaves only the parallax and the objects' own motion to find, so fewer levels
+  /// do (VINS-Fusion uses 1; 2 keeps more of the tracks on people walking close by). The backward
+  /// pass of the forward-backward check starts at the point's previous pixel and uses the image
+  /// alone.
+  int klt_predicted_levels = 2;
+  int klt_max_iterations = 30;
+  double klt_epsilon = 0.01;     ///< px; KLT stops when an update moves the point less
+  double max_fb_error_px = 0.5;  ///< forward-backward: the back-tracked point must land this close
+  FlowInit flow_init = FlowInit::Gyro;
+  bool fundamental_ransac = true;         ///< RANSAC on F over the static candidates
+  double fundamental_threshold_px = 1.0;  ///< max distance to the epipolar line, pixels
+  double fundamental_confidence = 0.99;
+};
+
+/// What happened to the features in one call, for logs, tests and the bench.
+struct FeatureTrackerStats {
+  int incoming = 0;        ///< features of the previous frame
+  int lost_klt = 0;        ///< KLT found no match or the point left the image
+  int lost_fb = 0;         ///< forward-backward mismatch
+  int lost_ransac = 0;     ///< off the epipolar geometry of the static candidates
+  int pruned = 0;          ///< closer than min_distance_px to a longer track
+  int tracked = 0;         ///< continued tracks in the output
+  int detected = 0;        ///< new corners in the output
+  bool gyro_used = false;  ///< the initial flow came from the gyro
+  /// Medians over the continued tracks: KLT's residual (mean absolute grey difference over the
+  /// window) and the distance from the initial guess to where KLT converged, pixels.
+  double median_klt_residual = 0;
+  double median_init_offset_px = 0;
+  /// Wall time of the parts, ms: grey image + pyramid, KLT both ways, fundamental RANSAC,
+  /// spacing + new corners.
+  double ms_pyramid = 0, ms_klt = 0, ms_ransac = 0, ms_detect = 0;
+  int cells_computed = 0;  ///< grid cells whose Shi-Tomasi corners were computed
+};
+
+class FeatureTracker {
+ public:
+  /// Throws std::invalid_argument naming a parameter out of range.
+  explicit FeatureTracker(FeatureTrackerParams params = {});
+
+  /// Tracks the previous frame's features into `frame` (its colour image, intrinsics, IMU
+  /// samples, extrinsics, depth and object masks) and tops them up with new corners. Features
+  /// come out static with object_id -1: classification is a later stage's. Throws
+  /// std::invalid_argument when the frame has no colour image.
+  std::vector<core::Feature> track(const core::Frame& frame);
+
+  const FeatureTrackerStats& lastStats() const { return stats_; }
+  const FeatureTrackerParams& params() const { return params_; }
+  /// Forgets every track (a gap in the stream); ids keep counting.
+  void reset();
+
+ private:
+  struct Track {
+    std::int64_t id;
+    cv::Point2f pixel;
+    cv::Point2f velocity;  ///< px per frame over the last interval
+    int length;
+  };
+  /// The KLT start of each point; `predicted` says whether it is a prediction.
+  std::vector<cv::Point2f> initialGuesses(const core::Frame& frame,
+                                          const std::vector<cv::Point2f>& previous,
+                                          bool& predicted);
+  void trackExisting(const core::Frame& frame);
+  void rejectByFundamental(const core::Frame& frame, const std::vector<cv::Point2f>& previous,
+                           std::vector<Track>& tracks);
+  void pruneAndDetect(const cv::Mat& gray);
+
+  FeatureTrackerParams params_;
+  FeatureTrackerStats stats_;
+  std::vector<Track> tracks_;
+  std::vector<cv::Mat> previous_pyramid_, pyramid_;
+  double previous_t_ = 0;
+  std::int64_t next_id_ = 0;
+  cv::Point2f median_velocity_{0, 0};  ///< of the last interval's tracks, for new corners
+};
+
+}  // namespace dynslam::frontend

@@ -1,0 +1,330 @@
+#include "dynslam/frontend/FeatureTracker.h"
+
+#include "dynslam/frontend/CameraMotion.h"
+#include "dynslam/frontend/FlowPrediction.h"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/video/tracking.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+
+namespace dynslam::frontend {
+namespace {
+
+void require(bool ok, const std::string& key, double value, const char* rule) {
+  if (!ok) throw std::invalid_argument(key + " = " + std::to_string(value) + ": must be " + rule);
+}
+
+void validate(const FeatureTrackerParams& p) {
+  const auto& c = p.corners;
+  require(p.max_features >= 1, "max_features", p.max_features, ">= 1");
+  require(c.min_distance_px >= 1, "min_distance_px", c.min_distance_px, ">= 1");
+  require(c.quality_level > 0 && c.quality_level < 1, "quality_level", c.quality_level,
+          "in (0, 1)");
+  require(c.block_size >= 1, "block_size", c.block_size, ">= 1");
+  require(c.grid_cols >= 1, "grid_cols", c.grid_cols, ">= 1");
+  require(c.grid_rows >= 1, "grid_rows", c.grid_rows, ">= 1");
+  require(c.border_px >= 0, "border_px", c.border_px, ">= 0");
+  require(p.klt_window_px >= 3 && p.klt_window_px % 2 == 1, "klt_window_px", p.klt_window_px,
+          "odd and >= 3");
+  require(p.klt_pyramid_levels >= 0 && p.klt_pyramid_levels <= 8, "klt_pyramid_levels",
+          p.klt_pyramid_levels, "in [0, 8]");
+  require(p.klt_predicted_levels >= 0 && p.klt_predicted_levels <= p.klt_pyramid_levels,
+          "klt_predicted_levels", p.klt_predicted_levels, "in [0, klt_pyramid_levels]");
+  require(c.min_eigenvalue >= 0, "min_eigenvalue", c.min_eigenvalue, ">= 0");
+  require(c.level >= 0 && c.level <= p.klt_pyramid_levels, "corner_level", c.level,
+          "in [0, klt_pyramid_levels] (a level of the KLT pyramid)");
+  require(p.klt_max_iterations >= 1, "klt_max_iterations", p.klt_max_iterations, ">= 1");
+  require(p.klt_epsilon > 0, "klt_epsilon", p.klt_epsilon, "> 0");
+  require(p.max_fb_error_px > 0, "max_fb_error_px", p.max_fb_error_px, "> 0");
+  require(p.fundamental_threshold_px > 0, "fundamental_threshold_px", p.fundamental_threshold_px,
+          "> 0");
+  require(p.fundamental_confidence > 0 && p.fundamental_confidence < 1, "fundamental_confidence",
+          p.fundamental_confidence, "in (0, 1)");
+}
+
+/// KLT needs the whole window inside the image to trust a match (VINS-Fusion keeps 1 px).
+bool insideImage(const cv::Point2f& p, cv::Size size) {
+  return p.x >= 1 && p.y >= 1 && p.x < size.width - 1 && p.y < size.height - 1;
+}
+
+bool insideAnyObjectMask(const core::Frame& frame, const cv::Point2f& p) {
+  const cv::Point q(cvRound(p.x), cvRound(p.y));
+  for (const auto& m : frame.object_masks)
+    if (!m.mask.empty() && m.roi.contains(q) && m.mask.at<uint8_t>(q - m.roi.tl()) != 0)
+      return true;
+  return false;
+}
+
+float depthAt(const cv::Mat& depth, const cv::Point2f& p) {
+  const int r = cvRound(p.y), c = cvRound(p.x);
+  if (depth.empty() || r < 0 || c < 0 || r >= depth.rows || c >= depth.cols) return 0;
+  const float z = depth.at<float>(r, c);
+  return std::isfinite(z) && z > 0 ? z : 0;
+}
+
+/// Adds the lifetime of the scope to `ms`.
+class ScopedMs {
+ public:
+  explicit ScopedMs(double& ms) : ms_(ms), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedMs() {
+    ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_)
+               .count();
+  }
+
+ private:
+  double& ms_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+FlowInit flowInitFromString(const std::string& text) {
+  if (text == "gyro") return FlowInit::Gyro;
+  if (text == "previous_motion") return FlowInit::PreviousMotion;
+  if (text == "none") return FlowInit::None;
+  throw std::invalid_argument("flow_init = '" + text + "': must be gyro, previous_motion or none");
+}
+
+std::string toString(FlowInit init) {
+  switch (init) {
+    case FlowInit::Gyro:
+      return "gyro";
+    case FlowInit::PreviousMotion:
+      return "previous_motion";
+    case FlowInit::None:
+      return "none";
+  }
+  return "?";
+}
+
+FeatureTracker::FeatureTracker(FeatureTrackerParams params) : params_(params) { validate(params_); }
+
+void FeatureTracker::reset() {
+  tracks_.clear();
+  previous_pyramid_.clear();
+  median_velocity_ = {0, 0};
+}
+
+std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
+  if (frame.rgb.empty())
+    throw std::invalid_argument("frame " + std::to_string(frame.index) +
+                                ": no colour image to track features in");
+  if (!frame.depth.empty() && frame.depth.type() != CV_32FC1)
+    throw std::invalid_argument("frame " + std::to_string(frame.index) +
+                                ": depth must be CV_32FC1 metres");
+  stats_ = {};
+  cv::Mat gray;
+  {
+    ScopedMs timer(stats_.ms_pyramid);
+    if (frame.rgb.channels() == 3)
+      cv::cvtColor(frame.rgb, gray, cv::COLOR_BGR2GRAY);
+    else
+      gray = frame.rgb;
+    // One pyramid (with derivatives) per image, used by the forward pass into it, the backward
+    // pass out of it, and the next frame's forward pass.
+    const cv::Size window(params_.klt_window_px, params_.klt_window_px);
+    cv::buildOpticalFlowPyramid(gray, pyramid_, window, params_.klt_pyramid_levels, true);
+  }
+
+  if (!previous_pyramid_.empty() && previous_pyramid_[0].size() == gray.size())
+    trackExisting(frame);
+  else
+    tracks_.clear();
+  {
+    ScopedMs timer(stats_.ms_detect);
+    pruneAndDetect(gray);
+  }
+
+  std::vector<core::Feature> out;
+  out.reserve(tracks_.size());
+  for (const auto& t : tracks_) {
+    core::Feature f;
+    f.id = t.id;
+    f.pixel = t.pixel;
+    f.depth = depthAt(frame.depth, t.pixel);
+    f.track_length = t.length;
+    out.push_back(f);
+  }
+  std::swap(previous_pyramid_, pyramid_);
+  previous_t_ = frame.t;
+  return out;
+}
+
+std::vector<cv::Point2f> FeatureTracker::initialGuesses(const core::Frame& frame,
+                                                        const std::vector<cv::Point2f>& previous,
+                                                        bool& predicted) {
+  predicted = params_.flow_init != FlowInit::None;
+  if (!predicted) return previous;
+  if (params_.flow_init == FlowInit::Gyro) {
+    if (const auto R = gyroCameraRotation(frame.imu, previous_t_, frame.t, frame.T_body_imu,
+                                          frame.T_body_camera)) {
+      stats_.gyro_used = true;
+      return predictByRotation(previous, frame.intrinsics, *R);
+    }
+  }
+  std::vector<cv::Point2f> guesses(previous.size());
+  for (size_t i = 0; i < previous.size(); ++i) guesses[i] = previous[i] + tracks_[i].velocity;
+  return guesses;
+}
+
+void FeatureTracker::trackExisting(const core::Frame& frame) {
+  stats_.incoming = int(tracks_.size());
+  if (tracks_.empty()) return;
+  const cv::Size size = frame.rgb.size();
+  const cv::Size window(params_.klt_window_px, params_.klt_window_px);
+  const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
+                              params_.klt_max_iterations, params_.klt_epsilon);
+
+  std::vector<cv::Point2f> previous(tracks_.size());
+  for (size_t i = 0; i < tracks_.size(); ++i) previous[i] = tracks_[i].pixel;
+  bool predicted = false;
+  const std::vector<cv::Point2f> guesses = initialGuesses(frame, previous, predicted);
+  std::vector<cv::Point2f> current = guesses;
+  std::vector<uchar> status;
+  std::vector<float> residual;
+  std::optional<ScopedMs> kltTimer(stats_.ms_klt);
+  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid_, previous, current, status, residual, window,
+                           predicted ? params_.klt_predicted_levels : params_.klt_pyramid_levels,
+                           stop, cv::OPTFLOW_USE_INITIAL_FLOW);
+
+  // Forward-backward check on the forward survivors only: track them back, starting from
+  // where they came from, and keep those that land within max_fb_error_px of it. Starting at
+  // the answer, the full-resolution level alone settles it (VINS-Fusion adds one level; a
+  // wrong forward match drifts away from the start either way).
+  std::vector<size_t> forward;
+  std::vector<cv::Point2f> there, back;
+  for (size_t i = 0; i < tracks_.size(); ++i) {
+    if (!status[i] || !insideImage(current[i], size)) {
+      ++stats_.lost_klt;
+      continue;
+    }
+    forward.push_back(i);
+    there.push_back(current[i]);
+    back.push_back(previous[i]);
+  }
+  std::vector<uchar> backStatus;
+  std::vector<float> backResidual;
+  if (!forward.empty())
+    cv::calcOpticalFlowPyrLK(pyramid_, previous_pyramid_, there, back, backStatus, backResidual,
+                             window, 0, stop, cv::OPTFLOW_USE_INITIAL_FLOW);
+
+  kltTimer.reset();
+
+  std::vector<Track> survivors;
+  std::vector<cv::Point2f> survivorsPrevious;
+  std::vector<double> residuals, offsets;
+  const double maxFb2 = params_.max_fb_error_px * params_.max_fb_error_px;
+  for (size_t k = 0; k < forward.size(); ++k) {
+    const size_t i = forward[k];
+    const cv::Point2f d = back[k] - previous[i];
+    if (!backStatus[k] || d.dot(d) > maxFb2) {
+      ++stats_.lost_fb;
+      continue;
+    }
+    Track t = tracks_[i];
+    t.velocity = current[i] - previous[i];
+    t.pixel = current[i];
+    ++t.length;
+    survivors.push_back(t);
+    survivorsPrevious.push_back(previous[i]);
+    residuals.push_back(residual[i]);
+    offsets.push_back(cv::norm(current[i] - guesses[i]));
+  }
+  if (params_.fundamental_ransac) {
+    ScopedMs timer(stats_.ms_ransac);
+    rejectByFundamental(frame, survivorsPrevious, survivors);
+  }
+  tracks_ = std::move(survivors);
+  stats_.median_klt_residual = median(residuals);
+  stats_.median_init_offset_px = median(offsets);
+
+  if (!tracks_.empty()) {
+    std::vector<double> vx, vy;
+    for (const auto& t : tracks_) {
+      vx.push_back(t.velocity.x);
+      vy.push_back(t.velocity.y);
+    }
+    median_velocity_ = cv::Point2f(float(median(vx)), float(median(vy)));
+  }
+}
+
+void FeatureTracker::rejectByFundamental(const core::Frame& frame,
+                                         const std::vector<cv::Point2f>& previous,
+                                         std::vector<Track>& tracks) {
+  // Only the static candidates (outside every object mask) must share the camera's epipolar
+  // geometry; features on objects move on their own and are judged by the classification.
+  std::vector<size_t> candidates;
+  std::vector<cv::Point2f> from, to;
+  for (size_t i = 0; i < tracks.size(); ++i) {
+    if (insideAnyObjectMask(frame, tracks[i].pixel)) continue;
+    candidates.push_back(i);
+    from.push_back(previous[i]);
+    to.push_back(tracks[i].pixel);
+  }
+  if (candidates.size() < 8) return;  // the 8-point minimum of findFundamentalMat
+  std::vector<uchar> inlier;
+  const cv::Mat F =
+      cv::findFundamentalMat(from, to, cv::FM_RANSAC, params_.fundamental_threshold_px,
+                             params_.fundamental_confidence, inlier);
+  if (F.empty() || inlier.size() != candidates.size()) return;  // degenerate: keep them all
+  std::vector<bool> drop(tracks.size(), false);
+  for (size_t k = 0; k < candidates.size(); ++k)
+    if (!inlier[k]) {
+      drop[candidates[k]] = true;
+      ++stats_.lost_ransac;
+    }
+  size_t w = 0;
+  for (size_t i = 0; i < tracks.size(); ++i)
+    if (!drop[i]) tracks[w++] = tracks[i];
+  tracks.resize(w);
+}
+
+void FeatureTracker::pruneAndDetect(const cv::Mat& gray) {
+  // Longest tracks claim their space first; a younger track that drifted into it goes.
+  std::vector<size_t> order(tracks_.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return tracks_[a].length > tracks_[b].length; });
+  cv::Mat free = freeSpaceMask(gray.size(), {}, params_.corners);
+  std::vector<bool> keep(tracks_.size(), false);
+  for (size_t i : order) keep[i] = claimIfFree(free, tracks_[i].pixel, params_.corners);
+  std::vector<Track> kept;
+  std::vector<cv::Point2f> occupied;
+  for (size_t i = 0; i < tracks_.size(); ++i) {
+    if (!keep[i]) {
+      ++stats_.pruned;
+      continue;
+    }
+    kept.push_back(tracks_[i]);
+    occupied.push_back(tracks_[i].pixel);
+  }
+  tracks_ = std::move(kept);
+  if (int(tracks_.size()) > params_.max_features) tracks_.resize(size_t(params_.max_features));
+  stats_.tracked = int(tracks_.size());
+
+  const int wanted = params_.max_features - int(tracks_.size());
+  // buildOpticalFlowPyramid with derivatives interleaves image and derivative levels.
+  const size_t step = pyramid_.size() > size_t(params_.klt_pyramid_levels) + 1 ? 2 : 1;
+  const cv::Mat& scored =
+      params_.corners.level == 0 ? gray : pyramid_.at(step * size_t(params_.corners.level));
+  for (const auto& p :
+       detectGridCorners(scored, free, occupied, wanted, params_.corners, &stats_.cells_computed))
+    tracks_.push_back({next_id_++, p, median_velocity_, 1});
+  stats_.detected = int(tracks_.size()) - stats_.tracked;
+}
+
+}  // namespace dynslam::frontend

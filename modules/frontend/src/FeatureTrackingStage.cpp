@@ -1,0 +1,133 @@
+#include "dynslam/frontend/FeatureTrackingStage.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace dynslam::frontend {
+namespace {
+
+#define FT_READ(type, field, key) field = c.read_##type(s, key, field)
+#define FT_WRITE(field, key, comment)                            \
+  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(), \
+          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment)
+
+}  // namespace
+
+void FeatureTrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                                const std::string& s) {
+  auto& t = tracker;
+  auto& g = tracker.corners;
+  FT_READ(int, t.max_features, "max_features");
+  FT_READ(double, g.min_distance_px, "min_distance_px");
+  FT_READ(double, g.quality_level, "quality_level");
+  FT_READ(double, g.min_eigenvalue, "min_eigenvalue");
+  FT_READ(int, g.block_size, "block_size");
+  FT_READ(int, g.grid_cols, "grid_cols");
+  FT_READ(int, g.grid_rows, "grid_rows");
+  FT_READ(int, g.border_px, "border_px");
+  FT_READ(int, g.level, "corner_level");
+  FT_READ(int, t.klt_window_px, "klt_window_px");
+  FT_READ(int, t.klt_pyramid_levels, "klt_pyramid_levels");
+  FT_READ(int, t.klt_predicted_levels, "klt_predicted_levels");
+  FT_READ(int, t.klt_max_iterations, "klt_max_iterations");
+  FT_READ(double, t.klt_epsilon, "klt_epsilon");
+  FT_READ(double, t.max_fb_error_px, "max_fb_error_px");
+  t.flow_init = flowInitFromString(c.read_string(s, "flow_init", toString(t.flow_init)));
+  FT_READ(bool, t.fundamental_ransac, "fundamental_ransac");
+  FT_READ(double, t.fundamental_threshold_px, "fundamental_threshold_px");
+  FT_READ(double, t.fundamental_confidence, "fundamental_confidence");
+}
+
+void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                              const std::string& s) const {
+  const auto& t = tracker;
+  const auto& g = tracker.corners;
+  FT_WRITE(t.max_features, "max_features", "features per frame: tracked + new corners");
+  FT_WRITE(g.min_distance_px, "min_distance_px", "px; minimum spacing between any two features");
+  FT_WRITE(g.quality_level, "quality_level",
+           "Shi-Tomasi: keep corners with min eigenvalue >= this * the best of their cell");
+  FT_WRITE(g.min_eigenvalue, "min_eigenvalue",
+           "Shi-Tomasi: and >= this (cornerMinEigenVal units; noise ~1e-5, corners 1e-3..1e-1)");
+  FT_WRITE(g.block_size, "block_size", "px; Shi-Tomasi gradient covariance window");
+  FT_WRITE(g.grid_cols, "grid_cols", "grid cells across; new corners go to the emptiest first");
+  FT_WRITE(g.grid_rows, "grid_rows", "grid cells down");
+  FT_WRITE(g.border_px, "border_px", "px; no new corner this close to the image edge");
+  FT_WRITE(g.level, "corner_level",
+           "score corners on this KLT pyramid level (0 full resolution, 1 half: 4x cheaper)");
+  FT_WRITE(t.klt_window_px, "klt_window_px", "px; KLT window side (odd)");
+  FT_WRITE(t.klt_pyramid_levels, "klt_pyramid_levels",
+           "KLT pyramid levels above the image when the flow is not predicted");
+  FT_WRITE(t.klt_predicted_levels, "klt_predicted_levels",
+           "KLT pyramid levels when the flow is predicted (gyro or previous motion)");
+  FT_WRITE(t.klt_max_iterations, "klt_max_iterations", "KLT iterations per pyramid level");
+  FT_WRITE(t.klt_epsilon, "klt_epsilon", "px; KLT stops when an update moves less");
+  FT_WRITE(t.max_fb_error_px, "max_fb_error_px",
+           "px; forward-backward check: tracked back, a point must land this close");
+  c.write(s, "flow_init", toString(t.flow_init), mrpt::config::MRPT_SAVE_NAME_PADDING(),
+          mrpt::config::MRPT_SAVE_VALUE_PADDING(),
+          "KLT start: gyro (rotation K R K^-1; previous_motion without gyro samples), "
+          "previous_motion (constant velocity per point) or none");
+  FT_WRITE(t.fundamental_ransac, "fundamental_ransac",
+           "RANSAC on the fundamental matrix over features outside every object mask");
+  FT_WRITE(t.fundamental_threshold_px, "fundamental_threshold_px",
+           "px; RANSAC inlier distance to the epipolar line");
+  FT_WRITE(t.fundamental_confidence, "fundamental_confidence", "RANSAC confidence in (0, 1)");
+}
+
+void FeatureTrackingStage::configure(const core::IniConfig& cfg, const std::string& section) {
+  try {
+    core::loadOptionsStrict(options_, cfg, section);
+    tracker_.emplace(options_.tracker);
+  } catch (const std::invalid_argument& e) {
+    throw core::ConfigError("[" + section + "] " + e.what() + " (in " + cfg.source() + ")");
+  }
+}
+
+void FeatureTrackingStage::process(core::Frame& frame) {
+  frame.features = tracker_->track(frame);
+  const auto& s = tracker_->lastStats();
+  ++frames_;
+  features_ += frame.features.size();
+  detected_ += size_t(s.detected);
+  gyroFrames_ += s.gyro_used;
+  incoming_ += size_t(s.incoming);
+  lostKlt_ += size_t(s.lost_klt);
+  lostFb_ += size_t(s.lost_fb);
+  lostRansac_ += size_t(s.lost_ransac);
+  std::map<std::int64_t, int> alive;
+  for (const auto& f : frame.features) alive.emplace(f.id, f.track_length);
+  for (const auto& [id, length] : alive_)
+    if (!alive.count(id)) {
+      endedLengthSum_ += length;
+      ++ended_;
+    }
+  alive_ = std::move(alive);
+}
+
+void FeatureTrackingStage::finish() {
+  for (const auto& [id, length] : alive_) {
+    endedLengthSum_ += length;
+    ++ended_;
+  }
+  alive_.clear();
+  MRPT_LOG_INFO_STREAM(frames_ << " frames, " << (frames_ ? features_ / frames_ : 0)
+                               << " features per frame, " << detected_ << " corners detected, "
+                               << gyroFrames_ << " frames with gyro-predicted flow, mean track "
+                               << (ended_ ? endedLengthSum_ / double(ended_) : 0) << " frames");
+}
+
+std::vector<std::pair<std::string, double>> FeatureTrackingStage::statistics() const {
+  const double in = double(std::max<size_t>(incoming_, 1));
+  return {{"frames", double(frames_)},
+          {"features_per_frame", frames_ ? double(features_) / double(frames_) : 0},
+          {"corners_detected", double(detected_)},
+          {"gyro_frames", double(gyroFrames_)},
+          {"mean_track_length", ended_ ? endedLengthSum_ / double(ended_) : 0},
+          {"lost_klt_fraction", double(lostKlt_) / in},
+          {"lost_forward_backward_fraction", double(lostFb_) / in},
+          {"lost_ransac_fraction", double(lostRansac_) / in}};
+}
+
+}  // namespace dynslam::frontend

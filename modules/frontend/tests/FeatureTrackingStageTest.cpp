@@ -1,0 +1,128 @@
+// The FeatureTracking stage: registered by name, configured from [FeatureTracking] with every
+// key documented, clear errors naming a bad key, features written to the frame.
+#include <dynslam/core/Config.h>
+#include <dynslam/core/StageRegistry.h>
+#include <dynslam/frontend/FeatureTrackingStage.h>
+#include <dynslam/frontend/RegisterStages.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+using namespace dynslam;
+using namespace dynslam::frontend;
+
+namespace {
+
+std::string errorOf(const std::string& ini) {
+  FeatureTrackingStage stage;
+  try {
+    stage.configure(core::IniConfig::fromText(ini, "test.ini"), "FeatureTracking");
+  } catch (const core::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// A textured image shifted by `shift` pixels: something to track.
+core::Frame texturedFrame(size_t index, int shift) {
+  cv::Mat texture(480 + 40, 640 + 40, CV_8UC3);
+  cv::RNG rng(3);
+  rng.fill(texture, cv::RNG::UNIFORM, 0, 255);
+  cv::GaussianBlur(texture, texture, cv::Size(0, 0), 2.5);
+  core::Frame f;
+  f.index = index;
+  f.t = index / 30.0;
+  f.rgb = texture(cv::Rect(20 + shift, 20, 640, 480)).clone();
+  f.depth = cv::Mat(480, 640, CV_32FC1, cv::Scalar(2.0f));
+  f.intrinsics = {525, 525, 319.5, 239.5, 640, 480};
+  return f;
+}
+
+}  // namespace
+
+TEST(FeatureTrackingStage, RegisteredAndConfiguredFromItsSection) {
+  core::StageRegistry registry;
+  registerStages(registry);
+  auto stage = registry.create("FeatureTracking");
+  ASSERT_TRUE(dynamic_cast<FeatureTrackingStage*>(stage.get()));
+  stage->configure(core::IniConfig::fromText("[FeatureTracking]\nmax_features = 80\n"
+                                             "min_distance_px = 30\nflow_init = none\n"
+                                             "fundamental_ransac = false\n"),
+                   "FeatureTracking");
+  const auto& o = static_cast<FeatureTrackingStage&>(*stage).options().tracker;
+  EXPECT_EQ(o.max_features, 80);
+  EXPECT_EQ(o.corners.min_distance_px, 30);
+  EXPECT_EQ(o.flow_init, FlowInit::None);
+  EXPECT_FALSE(o.fundamental_ransac);
+}
+
+TEST(FeatureTrackingStage, EveryKeyIsWrittenWithAComment) {
+  FeatureTrackingOptions options;
+  mrpt::config::CConfigFileMemory ini;
+  options.saveToConfigFile(ini, "FeatureTracking");
+  const auto keys = core::knownKeys(options);
+  EXPECT_EQ(keys.size(), 19u);
+  const std::string text = ini.getContent();
+  for (const auto& k : keys) {
+    const auto line = text.substr(text.find(k + " "));
+    EXPECT_NE(line.substr(0, line.find('\n')).find("//"), std::string::npos) << k;
+  }
+  // What it writes, it reads back (strictly).
+  FeatureTrackingStage stage;
+  EXPECT_NO_THROW(stage.configure(core::IniConfig::fromText(text), "FeatureTracking"));
+}
+
+TEST(FeatureTrackingStage, BadInputIsAnErrorNamingTheKey) {
+  EXPECT_NE(errorOf("[FeatureTracking]\nmax_feature = 10\n").find("max_feature"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[FeatureTracking]\nmax_features = 0\n").find("max_features = 0"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[FeatureTracking]\nklt_window_px = 20\n").find("klt_window_px"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[FeatureTracking]\nflow_init = imu\n").find("flow_init = 'imu'"),
+            std::string::npos);
+  const std::string e = errorOf("[FeatureTracking]\nfundamental_confidence = 1\n");
+  EXPECT_NE(e.find("[FeatureTracking] fundamental_confidence"), std::string::npos) << e;
+  EXPECT_NE(e.find("test.ini"), std::string::npos) << e;
+}
+
+TEST(FeatureTrackingStage, WritesStaticFeaturesWithIdsAndDepth) {
+  FeatureTrackingStage stage;
+  stage.configure(core::IniConfig::fromText("[FeatureTracking]\n"), "FeatureTracking");
+  core::Frame first = texturedFrame(0, 0), second = texturedFrame(1, 6);
+  stage.process(first);
+  stage.process(second);
+  ASSERT_EQ(first.features.size(), 150u);
+  size_t continued = 0;
+  for (const auto& f : second.features) {
+    EXPECT_EQ(f.feature_class, core::FeatureClass::Static);
+    EXPECT_EQ(f.object_id, -1);
+    EXPECT_EQ(f.depth, 2.0f);
+    if (f.track_length != 2) continue;
+    ++continued;
+    const auto it = std::find_if(first.features.begin(), first.features.end(),
+                                 [&](const core::Feature& g) { return g.id == f.id; });
+    ASSERT_NE(it, first.features.end());
+    EXPECT_NEAR(f.pixel.x, it->pixel.x - 6, 0.1) << "the image moved 6 px left";
+    EXPECT_NEAR(f.pixel.y, it->pixel.y, 0.1);
+  }
+  EXPECT_GT(continued, 130u);
+  stage.finish();
+  const auto stats = stage.statistics();
+  const auto stat = [&](const std::string& name) {
+    for (const auto& [k, v] : stats)
+      if (k == name) return v;
+    ADD_FAILURE() << "no statistic " << name;
+    return -1.0;
+  };
+  EXPECT_EQ(stat("frames"), 2);
+  EXPECT_EQ(stat("features_per_frame"), double(first.features.size() + second.features.size()) / 2);
+  EXPECT_GT(stat("mean_track_length"), 1.0);
+  EXPECT_LT(stat("mean_track_length"), 2.0);
+  EXPECT_EQ(stat("gyro_frames"), 0) << "no IMU samples";
+  core::Frame noColour = texturedFrame(2, 0);
+  noColour.rgb.release();
+  EXPECT_THROW(stage.process(noColour), std::invalid_argument);
+}
