@@ -2,6 +2,7 @@
 
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/detection/RegisterStages.h>
+#include <dynslam/estimator/RegisterStages.h>
 #include <dynslam/frontend/RegisterStages.h>
 #include <dynslam/odometry/RegisterStages.h>
 #include <dynslam/segmentation/RegisterStages.h>
@@ -16,6 +17,7 @@ void registerBuiltinStages(core::StageRegistry& registry) {
   detection::registerStages(registry);
   segmentation::registerStages(registry);
   tracking::registerStages(registry);
+  estimator::registerStages(registry);
   frontend::registerStages(registry);
 }
 

@@ -79,7 +79,7 @@ class SlidingWindow::ProblemBuilder {
     }
     if (used == 0) return 0;
     if (a.depth > 0 && touchesOnly)
-      sink(std::make_shared<DepthMeasurementFactor>(a.depth, w_.params_.depth_noise), nullptr,
+      sink(std::make_shared<DepthMeasurementFactor>(a.depth, w_.params_.depth_noise), &huber_,
            {&l.inverse_depth});
     return 1;
   }

@@ -1,0 +1,69 @@
+#pragma once
+// The estimator stage (class "Estimator", ini section [Estimator]; method.md section 5): reads
+// the frame's tracked features (FeatureTracking, and DynamicClassification when it ran),
+// selects keyframes, keeps the sliding window (SlidingWindow) and writes the camera pose of every
+// frame into Frame::T_world_camera: keyframes from the window's solve, the frames between them by
+// PnP against the window's landmarks.
+//
+// Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9):
+//   none   - every feature, whatever its class (no dynamic handling, like VINS-Mono);
+//   remove - only features classified Static (dynamic features dropped, like Dynamic-VINS).
+// (The paper's full method, rigid and non-rigid factors, is not built yet: issue 6.)
+//
+// Sensors: RGB-D only in this step (imu = off): a constant-motion prior ties consecutive
+// keyframes. World = the first frame's body frame.
+#include <dynslam/core/Stage.h>
+#include <dynslam/estimator/KeyframeSelector.h>
+#include <dynslam/estimator/SlidingWindow.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dynslam::estimator {
+
+enum class DynamicHandling { None, Remove };
+
+struct EstimatorOptions : mrpt::config::CLoadableOptions {
+  SlidingWindowParams window;
+  KeyframeSelectorParams keyframes;
+  DynamicHandling dynamic_handling = DynamicHandling::Remove;
+  int min_pnp_inliers = 15;
+  double pnp_threshold_px = 3.0;
+  /// A PnP pose farther than this from the constant-velocity prediction is taken for a wrong
+  /// RANSAC consensus and not used (m, deg).
+  double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+class EstimatorStage : public core::Stage {
+ public:
+  EstimatorStage();
+  ~EstimatorStage() override;
+
+  void configure(const core::IniConfig& cfg, const std::string& section) override;
+  void process(core::Frame& frame) override;
+  void finish() override;
+  bool estimatesPose() const override { return true; }
+  /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets.
+  std::vector<std::pair<std::string, double>> statistics() const override;
+
+  const EstimatorOptions& options() const { return options_; }
+
+ private:
+  void startWindow(const core::Frame& frame, const Eigen::Isometry3d& T_world_body);
+
+  EstimatorOptions options_;
+  std::unique_ptr<SlidingWindow> window_;
+  KeyframeSelector selector_;
+  std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
+  std::vector<double> solve_ms_;
+  std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
+};
+
+}  // namespace dynslam::estimator

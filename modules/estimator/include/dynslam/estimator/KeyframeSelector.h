@@ -1,0 +1,38 @@
+#pragma once
+// Keyframe selection by parallax and time (issue 6 item 4, as VINS-Fusion): a frame becomes a
+// keyframe when the features it shares with the last keyframe moved far enough on average, when
+// too few of them are still tracked, or when too long has passed since the last keyframe.
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace dynslam::estimator {
+
+struct KeyframeSelectorParams {
+  double min_parallax_px = 10.0;  ///< mean pixel motion of shared features since the keyframe
+  double max_interval_s = 0.5;    ///< a keyframe at least this often (the IMU factor stays short)
+  int min_shared = 40;            ///< fewer features shared with the last keyframe: keyframe
+};
+
+class KeyframeSelector {
+ public:
+  explicit KeyframeSelector(KeyframeSelectorParams params = {}) : params_(params) {}
+
+  /// Why a frame is (or is not) a keyframe, for logs and tests.
+  enum class Reason { First, Parallax, Interval, FewShared, NotKeyframe };
+
+  /// Decides for a frame at time t with these features (id -> pixel).
+  Reason decide(double t, const std::map<std::int64_t, Eigen::Vector2d>& features) const;
+  /// Records that the frame became a keyframe.
+  void accept(double t, const std::map<std::int64_t, Eigen::Vector2d>& features);
+
+ private:
+  KeyframeSelectorParams params_;
+  bool has_keyframe_ = false;
+  double keyframe_t_ = 0;
+  std::map<std::int64_t, Eigen::Vector2d> keyframe_features_;
+};
+
+}  // namespace dynslam::estimator

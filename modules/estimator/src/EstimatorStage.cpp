@@ -1,0 +1,199 @@
+#include "dynslam/estimator/EstimatorStage.h"
+
+#include "dynslam/estimator/FramePoseTracker.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace dynslam::estimator {
+namespace {
+
+const char* handlingName(DynamicHandling h) { return h == DynamicHandling::None ? "none" : "remove"; }
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                          const std::string& s) {
+  auto& w = window;
+  w.window_size = c.read_int(s, "window_size", w.window_size);
+  w.max_iterations = c.read_int(s, "max_iterations", w.max_iterations);
+  w.max_solver_time_s = c.read_double(s, "max_solver_time", w.max_solver_time_s);
+  w.pixel_sigma = c.read_double(s, "pixel_sigma", w.pixel_sigma);
+  w.huber_sigmas = c.read_double(s, "huber_sigmas", w.huber_sigmas);
+  w.depth_noise.a = c.read_double(s, "depth_sigma_a", w.depth_noise.a);
+  w.depth_noise.b = c.read_double(s, "depth_sigma_b", w.depth_noise.b);
+  w.transferred_depth = c.read_bool(s, "transferred_depth", w.transferred_depth);
+  w.motion_prior_sigma_translation =
+      c.read_double(s, "motion_prior_sigma_translation", w.motion_prior_sigma_translation);
+  w.motion_prior_sigma_rotation =
+      c.read_double(s, "motion_prior_sigma_rotation", w.motion_prior_sigma_rotation);
+  keyframes.min_parallax_px = c.read_double(s, "keyframe_parallax_px", keyframes.min_parallax_px);
+  keyframes.max_interval_s = c.read_double(s, "keyframe_max_interval", keyframes.max_interval_s);
+  keyframes.min_shared = c.read_int(s, "keyframe_min_shared", keyframes.min_shared);
+  min_pnp_inliers = c.read_int(s, "min_pnp_inliers", min_pnp_inliers);
+  pnp_threshold_px = c.read_double(s, "pnp_threshold_px", pnp_threshold_px);
+  pnp_max_correction_m = c.read_double(s, "pnp_max_correction_m", pnp_max_correction_m);
+  pnp_max_correction_deg = c.read_double(s, "pnp_max_correction_deg", pnp_max_correction_deg);
+  const std::string h = c.read_string(s, "dynamic_handling", handlingName(dynamic_handling));
+  if (h == "none")
+    dynamic_handling = DynamicHandling::None;
+  else if (h == "remove")
+    dynamic_handling = DynamicHandling::Remove;
+  else
+    throw std::invalid_argument("dynamic_handling = '" + h + "': expected none or remove" +
+                                (h == "full" ? " (full, the paper's method, is not built yet)" : ""));
+}
+
+void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                        const std::string& s) const {
+  const auto write = [&](const char* key, auto value, const char* comment) {
+    c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
+            mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
+  };
+  const auto& w = window;
+  write("window_size", w.window_size, "keyframes in the sliding window");
+  write("max_iterations", w.max_iterations, "Ceres iterations per keyframe solve");
+  write("max_solver_time", w.max_solver_time_s, "s; Ceres wall-time limit per keyframe solve");
+  write("pixel_sigma", w.pixel_sigma, "px; feature position noise");
+  write("huber_sigmas", w.huber_sigmas, "Huber threshold on whitened residuals");
+  write("depth_sigma_a", w.depth_noise.a, "m; depth noise sigma_d = a + b d^2");
+  write("depth_sigma_b", w.depth_noise.b, "1/m; depth noise sigma_d = a + b d^2");
+  write("transferred_depth", w.transferred_depth,
+        "depth measured in later keyframes constrains them too");
+  write("motion_prior_sigma_translation", w.motion_prior_sigma_translation,
+        "m per keyframe interval; RGB-D-only constant-motion prior");
+  write("motion_prior_sigma_rotation", w.motion_prior_sigma_rotation,
+        "rad per keyframe interval; RGB-D-only constant-motion prior");
+  write("keyframe_parallax_px", keyframes.min_parallax_px,
+        "px; mean feature motion since the last keyframe that makes a keyframe");
+  write("keyframe_max_interval", keyframes.max_interval_s, "s; a keyframe at least this often");
+  write("keyframe_min_shared", keyframes.min_shared,
+        "fewer features shared with the last keyframe make a keyframe");
+  write("min_pnp_inliers", min_pnp_inliers, "PnP inliers needed to track a frame");
+  write("pnp_threshold_px", pnp_threshold_px, "px; PnP RANSAC reprojection threshold");
+  write("pnp_max_correction_m", pnp_max_correction_m,
+        "m; a PnP pose farther than this from the motion prediction is rejected");
+  write("pnp_max_correction_deg", pnp_max_correction_deg,
+        "deg; a PnP pose turned more than this from the motion prediction is rejected");
+  write("dynamic_handling", std::string(handlingName(dynamic_handling)),
+        "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS)");
+}
+
+EstimatorStage::EstimatorStage() = default;
+EstimatorStage::~EstimatorStage() = default;
+
+void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& section) {
+  try {
+    core::loadOptionsStrict(options_, cfg, section);
+  } catch (const std::invalid_argument& e) {
+    throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
+  }
+  const auto& w = options_.window;
+  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) ||
+      !(w.pixel_sigma > 0) || !(w.huber_sigmas > 0) || options_.min_pnp_inliers < 4)
+    throw core::ConfigError("[" + section + "] in " + cfg.source() +
+                            ": window_size >= 2, max_iterations >= 1, min_pnp_inliers >= 4 and "
+                            "positive max_solver_time, pixel_sigma, huber_sigmas are required");
+  options_.window.use_imu = false;
+  selector_ = KeyframeSelector(options_.keyframes);
+}
+
+void EstimatorStage::startWindow(const core::Frame& frame, const Eigen::Isometry3d& T_world_body) {
+  const auto& k = frame.intrinsics;
+  if (!(k.fx > 0 && k.fy > 0))
+    throw std::runtime_error("Estimator: frame " + std::to_string(frame.index) +
+                             " has no camera intrinsics");
+  window_ = std::make_unique<SlidingWindow>(options_.window, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
+                                            frame.T_body_camera);
+  selector_ = KeyframeSelector(options_.keyframes);
+}
+
+void EstimatorStage::process(core::Frame& frame) {
+  ++frames_;
+  std::vector<FeatureObservation> observations;
+  std::map<std::int64_t, Eigen::Vector2d> pixels;
+  for (const auto& f : frame.features) {
+    if (options_.dynamic_handling == DynamicHandling::Remove &&
+        f.feature_class != core::FeatureClass::Static)
+      continue;
+    const Eigen::Vector2d px(f.pixel.x, f.pixel.y);
+    observations.push_back({f.id, px, f.depth > 0 ? double(f.depth) : 0.0});
+    pixels[f.id] = px;
+  }
+  const Eigen::Isometry3d T_bc = frame.T_body_camera;
+
+  // Predicted body pose: constant velocity from the last two frames.
+  Eigen::Isometry3d predicted = Eigen::Isometry3d::Identity();
+  if (last_body_) predicted = *last_body_;
+  if (last_body_ && previous_body_) predicted = *last_body_ * (previous_body_->inverse() * *last_body_);
+
+  Eigen::Isometry3d T_wb = predicted;
+  if (!window_) {
+    startWindow(frame, T_wb);
+  } else {
+    const PinholeCamera camera{frame.intrinsics.fx, frame.intrinsics.fy, frame.intrinsics.cx,
+                               frame.intrinsics.cy};
+    FramePoseTrackerParams pnp{options_.min_pnp_inliers, options_.pnp_threshold_px};
+    const auto tracked =
+        trackFramePose(camera, window_->landmarkPositions(), pixels, predicted * T_bc, pnp);
+    const auto plausible = [&](const Eigen::Isometry3d& T) {
+      const Eigen::Isometry3d d = predicted.inverse() * T;
+      return d.translation().norm() <= options_.pnp_max_correction_m &&
+             Eigen::AngleAxisd(d.rotation()).angle() * 180.0 / M_PI <=
+                 options_.pnp_max_correction_deg;
+    };
+    if (tracked && plausible(tracked->T_world_camera * T_bc.inverse()))
+      T_wb = tracked->T_world_camera * T_bc.inverse();
+    else
+      ++pnp_failures_;
+  }
+
+  if (selector_.decide(frame.t, pixels) != KeyframeSelector::Reason::NotKeyframe) {
+    KeyframeInput in;
+    in.t = frame.t;
+    in.T_world_body = T_wb;
+    in.features = std::move(observations);
+    const SolveReport report = window_->addKeyframe(in);
+    ++keyframes_;
+    solve_ms_.push_back(report.solve_ms);
+    if (report.usable) {
+      T_wb = window_->latestPose();
+      selector_.accept(frame.t, pixels);
+    } else {
+      // Solver divergence: start again from the last good pose, the trajectory stays continuous.
+      ++resets_;
+      MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed, window restarted");
+      startWindow(frame, T_wb);
+      KeyframeInput again = in;
+      window_->addKeyframe(again);
+      selector_.accept(frame.t, pixels);
+    }
+  }
+  previous_body_ = last_body_;
+  last_body_ = T_wb;
+  frame.T_world_camera = T_wb * T_bc;
+}
+
+void EstimatorStage::finish() {
+  MRPT_LOG_INFO_STREAM(frames_ << " frames, " << keyframes_ << " keyframes, solve median "
+                               << median(solve_ms_) << " ms, " << pnp_failures_
+                               << " frames without a PnP pose, " << resets_ << " restarts");
+}
+
+std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
+  return {{"keyframes", double(keyframes_)},
+          {"solve_ms_median", median(solve_ms_)},
+          {"solve_ms_max", solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
+          {"pnp_failures", double(pnp_failures_)},
+          {"resets", double(resets_)}};
+}
+
+}  // namespace dynslam::estimator
