@@ -48,6 +48,6 @@ TEST(FeatureTrackerSevenScenes, TracksAStaticRoomWithFewRejections) {
             << " % per frame (RANSAC " << 100.0 * lostRansac / incoming << " %)\n";
   EXPECT_GT(meanAge, 8.0) << "measured 21";
   EXPECT_GT(double(withDepth) / features, 0.8);
-  EXPECT_LT(double(lostRansac) / incoming, 0.05) << "a static room: few epipolar outliers";
-  EXPECT_LT(double(lost) / incoming, 0.15);
+  EXPECT_LT(double(lostRansac) / incoming, 0.03) << "a static room: few epipolar outliers (1.2 %)";
+  EXPECT_LT(double(lost) / incoming, 0.10) << "measured 4 %";
 }

@@ -98,8 +98,8 @@ TEST(FeatureTrackerSim, StaticFeaturesLandWhereTheCameraMotionPutsThem) {
 
 // A camera spinning in place at 120 deg/s (4 deg, ~37 px per frame): the gyro's infinite
 // homography starts KLT next to the answer; starting at the old pixel loses more tracks.
-// Measured (1 s, 150 features): gyro lost 355 of 4500 incoming tracks (most of them leaving
-// the image), start 1.7 px from the answer; none lost 733, start 38.6 px away.
+// Measured (1 s, 150 features): gyro lost 356 of 4500 incoming tracks (most of them leaving
+// the image), start 1.7 px from the answer; none lost 736, start 38.6 px away.
 TEST(FeatureTrackerSim, GyroInitialFlowBeatsZeroInitialFlowOnAFastRotation) {
   const sim::Simulator sim(scenario(
       "static", {"Scenario.duration=1", "Camera.orbit_radius=0.05", "Camera.orbit_period=3",
@@ -203,8 +203,8 @@ TEST(FeatureTrackerSim, SpacingGridAndDepth) {
 
 // RANSAC on F drops static candidates that move against the camera's epipolar geometry, and
 // leaves features inside object masks alone: a patch whose texture scrolls down 8 px per frame
-// in a static room loses its tracks every frame unless a mask covers it. Measured: 6 of 47
-// patch features continued without the mask, 65 of 72 with it. (At 3-6 px per frame 13-28 %
+// in a static room loses its tracks every frame unless a mask covers it. Measured: 4 of 44
+// patch features continued without the mask, 65 of 72 with it. (At 3-6 px per frame more
 // survive: with the room's small parallax F is weakly determined, and RANSAC can pick an
 // epipole whose lines run along the patch's motion.)
 TEST(FeatureTrackerSim, FundamentalRansacSparesFeaturesInsideObjectMasks) {
