@@ -169,7 +169,7 @@ std::vector<cv::Point2f> FeatureTracker::initialGuesses(const core::Frame& frame
                                                         bool& predicted) {
   predicted = params_.flow_init != FlowInit::None;
   if (!predicted) return previous;
-  if (params_.flow_init == FlowInit::Gyro) {
+  if (params_.flow_init == FlowInit::Gyro && frame.intrinsics.fx > 0 && frame.intrinsics.fy > 0) {
     if (const auto R = gyroCameraRotation(frame.imu, previous_t_, frame.t, frame.T_body_imu,
                                           frame.T_body_camera)) {
       stats_.gyro_used = true;
