@@ -42,6 +42,16 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   pnp_threshold_px = c.read_double(s, "pnp_threshold_px", pnp_threshold_px);
   pnp_max_correction_m = c.read_double(s, "pnp_max_correction_m", pnp_max_correction_m);
   pnp_max_correction_deg = c.read_double(s, "pnp_max_correction_deg", pnp_max_correction_deg);
+  use_imu = c.read_bool(s, "use_imu", use_imu);
+  auto& n = window.imu_noise;
+  n.acc_noise = c.read_double(s, "acc_noise", n.acc_noise);
+  n.gyro_noise = c.read_double(s, "gyro_noise", n.gyro_noise);
+  n.acc_random_walk = c.read_double(s, "acc_random_walk", n.acc_random_walk);
+  n.gyro_random_walk = c.read_double(s, "gyro_random_walk", n.gyro_random_walk);
+  imu_init.gravity_magnitude = c.read_double(s, "gravity", imu_init.gravity_magnitude);
+  imu_init.min_acceleration_rms =
+      c.read_double(s, "init_min_acceleration_rms", imu_init.min_acceleration_rms);
+  window.gravity = Eigen::Vector3d(0, 0, -imu_init.gravity_magnitude);
   const std::string h = c.read_string(s, "dynamic_handling", handlingName(dynamic_handling));
   if (h == "none")
     dynamic_handling = DynamicHandling::None;
@@ -83,6 +93,16 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
         "m; a PnP pose farther than this from the motion prediction is rejected");
   write("pnp_max_correction_deg", pnp_max_correction_deg,
         "deg; a PnP pose turned more than this from the motion prediction is rejected");
+  write("use_imu", use_imu, "use the IMU when the frames carry gyro + accelerometer samples");
+  write("acc_noise", window.imu_noise.acc_noise, "m/s^2/sqrt(Hz); accelerometer white noise");
+  write("gyro_noise", window.imu_noise.gyro_noise, "rad/s/sqrt(Hz); gyroscope white noise");
+  write("acc_random_walk", window.imu_noise.acc_random_walk,
+        "m/s^3/sqrt(Hz); accelerometer bias random walk");
+  write("gyro_random_walk", window.imu_noise.gyro_random_walk,
+        "rad/s^2/sqrt(Hz); gyroscope bias random walk");
+  write("gravity", imu_init.gravity_magnitude, "m/s^2; local gravity");
+  write("init_min_acceleration_rms", imu_init.min_acceleration_rms,
+        "m/s^2; IMU initialization waits for this much motion (0: still starts accepted)");
   write("dynamic_handling", std::string(handlingName(dynamic_handling)),
         "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS)");
 }
@@ -102,22 +122,70 @@ void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& se
     throw core::ConfigError("[" + section + "] in " + cfg.source() +
                             ": window_size >= 2, max_iterations >= 1, min_pnp_inliers >= 4 and "
                             "positive max_solver_time, pixel_sigma, huber_sigmas are required");
-  options_.window.use_imu = false;
   selector_ = KeyframeSelector(options_.keyframes);
 }
 
-void EstimatorStage::startWindow(const core::Frame& frame, const Eigen::Isometry3d& T_world_body) {
+void EstimatorStage::startWindow(const core::Frame& frame) {
   const auto& k = frame.intrinsics;
   if (!(k.fx > 0 && k.fy > 0))
     throw std::runtime_error("Estimator: frame " + std::to_string(frame.index) +
                              " has no camera intrinsics");
-  window_ = std::make_unique<SlidingWindow>(options_.window, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
-                                            frame.T_body_camera);
+  SlidingWindowParams params = options_.window;
+  params.use_imu = false;  // until the IMU initialization succeeds
+  window_ = std::make_unique<SlidingWindow>(params, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
+                                            frame.T_body_imu.inverse() * frame.T_body_camera);
   selector_ = KeyframeSelector(options_.keyframes);
 }
 
+Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocity) const {
+  if (window_ && window_->usesImu() && imu_) {
+    if (const auto pre = imu_->peekAt(t)) {
+      const Eigen::Isometry3d T = window_->latestPose();
+      Eigen::Vector3d p, v;
+      Eigen::Quaterniond q;
+      pre->predict(T.translation(), Eigen::Quaterniond(T.rotation()), window_->latestVelocity(),
+                   window_->latestAccBias(), window_->latestGyroBias(), options_.window.gravity,
+                   p, q, v);
+      Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+      out.linear() = q.toRotationMatrix();
+      out.translation() = p;
+      if (velocity) *velocity = v;
+      return out;
+    }
+  }
+  if (velocity) velocity->setZero();
+  if (last_body_ && previous_body_) return *last_body_ * (previous_body_->inverse() * *last_body_);
+  return last_body_ ? *last_body_ : Eigen::Isometry3d::Identity();
+}
+
+void EstimatorStage::tryImuInitialization(double t) {
+  if (!imu_ || window_->usesImu() || int(window_->size()) < options_.window.window_size) return;
+  std::vector<ImuInitKeyframe> keyframes;
+  std::vector<ImuPreintegration*> preintegrations;
+  if (!window_->imuInitInput(keyframes, preintegrations)) return;
+  ++imu_init_attempts_;
+  const ImuInitialization init = initializeImu(keyframes, preintegrations, options_.imu_init);
+  if (!init.success) {
+    if (init.reason != last_init_failure_)
+      MRPT_LOG_INFO_STREAM("IMU initialization at t = " << t << " refused: " << init.reason);
+    last_init_failure_ = init.reason;
+    return;
+  }
+  window_->switchToImu(init);
+  imu_initialized_at_ = t - first_t_;
+  // The motion history is in the old world frame: rotate it with the window.
+  Eigen::Isometry3d R = Eigen::Isometry3d::Identity();
+  R.linear() = init.R_gravity_world;
+  if (last_body_) last_body_ = R * *last_body_;
+  if (previous_body_) previous_body_ = R * *previous_body_;
+  MRPT_LOG_INFO_STREAM("IMU initialized at t = " << imu_initialized_at_ << " s: gyro bias "
+                                                  << init.gyro_bias.transpose() << " rad/s, "
+                                                  << "alignment residual " << init.position_rms
+                                                  << " m");
+}
+
 void EstimatorStage::process(core::Frame& frame) {
-  ++frames_;
+  if (frames_++ == 0) first_t_ = frame.t;
   std::vector<FeatureObservation> observations;
   std::map<std::int64_t, Eigen::Vector2d> pixels;
   for (const auto& f : frame.features) {
@@ -128,30 +196,32 @@ void EstimatorStage::process(core::Frame& frame) {
     observations.push_back({f.id, px, f.depth > 0 ? double(f.depth) : 0.0});
     pixels[f.id] = px;
   }
-  const Eigen::Isometry3d T_bc = frame.T_body_camera;
+  if (options_.use_imu && !imu_) {
+    for (const auto& s : frame.imu)
+      if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
+  }
+  if (imu_) imu_->addSamples(frame.imu, frame.index);
+  const Eigen::Isometry3d T_ic = frame.T_body_imu.inverse() * frame.T_body_camera;
 
-  // Predicted body pose: constant velocity from the last two frames.
-  Eigen::Isometry3d predicted = Eigen::Isometry3d::Identity();
-  if (last_body_) predicted = *last_body_;
-  if (last_body_ && previous_body_) predicted = *last_body_ * (previous_body_->inverse() * *last_body_);
-
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  const Eigen::Isometry3d predicted = predictBody(frame.t, &velocity);
   Eigen::Isometry3d T_wb = predicted;
   if (!window_) {
-    startWindow(frame, T_wb);
+    startWindow(frame);
   } else {
     const PinholeCamera camera{frame.intrinsics.fx, frame.intrinsics.fy, frame.intrinsics.cx,
                                frame.intrinsics.cy};
     FramePoseTrackerParams pnp{options_.min_pnp_inliers, options_.pnp_threshold_px};
     const auto tracked =
-        trackFramePose(camera, window_->landmarkPositions(), pixels, predicted * T_bc, pnp);
+        trackFramePose(camera, window_->landmarkPositions(), pixels, predicted * T_ic, pnp);
     const auto plausible = [&](const Eigen::Isometry3d& T) {
       const Eigen::Isometry3d d = predicted.inverse() * T;
       return d.translation().norm() <= options_.pnp_max_correction_m &&
              Eigen::AngleAxisd(d.rotation()).angle() * 180.0 / M_PI <=
                  options_.pnp_max_correction_deg;
     };
-    if (tracked && plausible(tracked->T_world_camera * T_bc.inverse()))
-      T_wb = tracked->T_world_camera * T_bc.inverse();
+    if (tracked && plausible(tracked->T_world_camera * T_ic.inverse()))
+      T_wb = tracked->T_world_camera * T_ic.inverse();
     else
       ++pnp_failures_;
   }
@@ -160,32 +230,46 @@ void EstimatorStage::process(core::Frame& frame) {
     KeyframeInput in;
     in.t = frame.t;
     in.T_world_body = T_wb;
+    in.velocity = velocity;
     in.features = std::move(observations);
+    if (imu_)
+      in.preintegration = imu_->cutAt(frame.t,
+                                      window_->empty() ? Eigen::Vector3d::Zero()
+                                                       : window_->latestAccBias(),
+                                      window_->empty() ? Eigen::Vector3d::Zero()
+                                                       : window_->latestGyroBias());
     const SolveReport report = window_->addKeyframe(in);
     ++keyframes_;
     solve_ms_.push_back(report.solve_ms);
     if (report.usable) {
       T_wb = window_->latestPose();
       selector_.accept(frame.t, pixels);
+      tryImuInitialization(frame.t);
+      if (window_->usesImu()) T_wb = window_->latestPose();
     } else {
-      // Solver divergence: start again from the last good pose, the trajectory stays continuous.
+      // Solver divergence: start again from the last good pose, the trajectory stays continuous
+      // (the new window is RGB-D only until the IMU initializes again).
       ++resets_;
       MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed, window restarted");
-      startWindow(frame, T_wb);
-      KeyframeInput again = in;
-      window_->addKeyframe(again);
+      startWindow(frame);
+      in.T_world_body = T_wb;
+      in.preintegration = nullptr;
+      window_->addKeyframe(in);
       selector_.accept(frame.t, pixels);
     }
   }
   previous_body_ = last_body_;
   last_body_ = T_wb;
-  frame.T_world_camera = T_wb * T_bc;
+  frame.T_world_camera = T_wb * T_ic;
 }
 
 void EstimatorStage::finish() {
   MRPT_LOG_INFO_STREAM(frames_ << " frames, " << keyframes_ << " keyframes, solve median "
                                << median(solve_ms_) << " ms, " << pnp_failures_
-                               << " frames without a PnP pose, " << resets_ << " restarts");
+                               << " frames without a PnP pose, " << resets_ << " restarts; IMU "
+                               << (imu_initialized_at_ >= 0
+                                       ? "initialized at " + std::to_string(imu_initialized_at_) + " s"
+                                       : std::string(imu_ ? "never initialized" : "not used")));
 }
 
 std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
@@ -193,7 +277,9 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
           {"solve_ms_median", median(solve_ms_)},
           {"solve_ms_max", solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
           {"pnp_failures", double(pnp_failures_)},
-          {"resets", double(resets_)}};
+          {"resets", double(resets_)},
+          {"imu_initialized_at", imu_initialized_at_},
+          {"imu_init_attempts", double(imu_init_attempts_)}};
 }
 
 }  // namespace dynslam::estimator

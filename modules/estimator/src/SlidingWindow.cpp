@@ -222,6 +222,38 @@ void SlidingWindow::marginalizeOldest() {
   keyframes_.pop_front();
 }
 
+bool SlidingWindow::imuInitInput(std::vector<ImuInitKeyframe>& keyframes,
+                                 std::vector<ImuPreintegration*>& preintegrations) const {
+  keyframes.clear();
+  preintegrations.clear();
+  for (size_t k = 0; k < keyframes_.size(); ++k) {
+    keyframes.push_back({keyframes_[k].t, poseFromBlock(keyframes_[k].pose)});
+    if (k == 0) continue;
+    if (!keyframes_[k].preintegration) return false;
+    preintegrations.push_back(keyframes_[k].preintegration.get());
+  }
+  return true;
+}
+
+void SlidingWindow::switchToImu(const ImuInitialization& init) {
+  if (init.velocities_world.size() != keyframes_.size())
+    throw std::invalid_argument("SlidingWindow::switchToImu: one velocity per keyframe needed");
+  Eigen::Isometry3d R_gw = Eigen::Isometry3d::Identity();
+  R_gw.linear() = init.R_gravity_world;
+  for (size_t k = 0; k < keyframes_.size(); ++k) {
+    Keyframe& kf = keyframes_[k];
+    poseToBlock(R_gw * poseFromBlock(kf.pose), kf.pose);
+    const Eigen::Vector3d v = init.R_gravity_world * init.velocities_world[k];
+    for (int i = 0; i < 3; ++i) {
+      kf.speed_bias[i] = v(i);
+      kf.speed_bias[3 + i] = 0.0;
+      kf.speed_bias[6 + i] = init.gyro_bias(i);
+    }
+  }
+  prior_ = {};
+  params_.use_imu = true;
+}
+
 double SlidingWindow::latestTime() const { return keyframes_.back().t; }
 Eigen::Isometry3d SlidingWindow::latestPose() const {
   return poseFromBlock(keyframes_.back().pose);

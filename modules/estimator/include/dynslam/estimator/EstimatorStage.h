@@ -10,9 +10,17 @@
 //   remove - only features classified Static (dynamic features dropped, like Dynamic-VINS).
 // (The paper's full method, rigid and non-rigid factors, is not built yet: issue 6.)
 //
-// Sensors: RGB-D only in this step (imu = off): a constant-motion prior ties consecutive
-// keyframes. World = the first frame's body frame.
+// Sensors: RGB-D, and the IMU when the frames carry gyro + accelerometer samples and use_imu is
+// on. The window starts from RGB-D alone (a constant-motion prior ties consecutive keyframes,
+// world = the first frame's IMU frame); once it is full, the IMU initialization (ImuInitializer)
+// is tried at every keyframe until it succeeds, and the window turns visual-inertial (world
+// rotated to gravity along -z, IMU factors, frames between keyframes predicted by the IMU). The
+// estimator's body frame is the IMU's; its camera extrinsic is T_imu_camera =
+// T_body_imu^-1 T_body_camera from the rawlog's sensor poses. Without an IMU (e.g. 7-Scenes,
+// TUM's accelerometer-only IMU) it stays RGB-D only.
 #include <dynslam/core/Stage.h>
+#include <dynslam/estimator/ImuInitializer.h>
+#include <dynslam/estimator/KeyframeImu.h>
 #include <dynslam/estimator/KeyframeSelector.h>
 #include <dynslam/estimator/SlidingWindow.h>
 
@@ -31,6 +39,8 @@ struct EstimatorOptions : mrpt::config::CLoadableOptions {
   SlidingWindowParams window;
   KeyframeSelectorParams keyframes;
   DynamicHandling dynamic_handling = DynamicHandling::Remove;
+  bool use_imu = true;  ///< use the IMU when the frames carry gyro + accelerometer samples
+  ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
   double pnp_threshold_px = 3.0;
   /// A PnP pose farther than this from the constant-velocity prediction is taken for a wrong
@@ -50,20 +60,29 @@ class EstimatorStage : public core::Stage {
   void process(core::Frame& frame) override;
   void finish() override;
   bool estimatesPose() const override { return true; }
-  /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets.
+  /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets, imu_initialized_at (s
+  /// of stream, -1 never), imu_init_attempts.
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
 
  private:
-  void startWindow(const core::Frame& frame, const Eigen::Isometry3d& T_world_body);
+  void startWindow(const core::Frame& frame);
+  /// The body pose this frame is expected at: IMU propagation from the last keyframe when the
+  /// window is visual-inertial, else constant velocity from the last two frames.
+  Eigen::Isometry3d predictBody(double t, Eigen::Vector3d* velocity) const;
+  void tryImuInitialization(double t);
 
   EstimatorOptions options_;
   std::unique_ptr<SlidingWindow> window_;
+  std::unique_ptr<KeyframeImu> imu_;
   KeyframeSelector selector_;
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
   std::vector<double> solve_ms_;
   std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
+  std::size_t imu_init_attempts_ = 0;
+  double first_t_ = 0, imu_initialized_at_ = -1;
+  std::string last_init_failure_;
 };
 
 }  // namespace dynslam::estimator

@@ -9,6 +9,7 @@
 // Factors (one per file in factors/): StaticReprojectionFactor (Huber loss) and
 // DepthMeasurementFactor / TransferredDepthFactor per static landmark, ImuFactor, the motion
 // prior (RigidSmoothMotionFactor on the body poses), MarginalizationFactor.
+#include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/LandmarkTable.h>
 #include <dynslam/estimator/factors/DepthMeasurementFactor.h>
 #include <dynslam/estimator/factors/MarginalizationFactor.h>
@@ -79,6 +80,18 @@ class SlidingWindow {
   Eigen::Vector3d latestVelocity() const;
   Eigen::Vector3d latestAccBias() const;
   Eigen::Vector3d latestGyroBias() const;
+
+  /// The window's keyframes and the preintegrations between them (preintegrations[k] from
+  /// keyframe k to k + 1), for initializeImu(). Empty when a preintegration is missing.
+  bool imuInitInput(std::vector<ImuInitKeyframe>& keyframes,
+                    std::vector<ImuPreintegration*>& preintegrations) const;
+
+  /// Turns a window built from RGB-D alone into a visual-inertial one with the initializer's
+  /// result: the world is rotated so gravity points along -z, velocities and the gyro bias set,
+  /// the IMU factors replace the motion prior. The marginalisation prior (made without the IMU,
+  /// in the old world frame) is dropped; the first keyframe then holds the gauge again.
+  void switchToImu(const ImuInitialization& init);
+  bool usesImu() const { return params_.use_imu; }
 
   /// World positions of the landmarks seen in at least two keyframes, for tracking frames
   /// between keyframes.

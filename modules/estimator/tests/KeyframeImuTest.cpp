@@ -1,0 +1,54 @@
+// KeyframeImu: preintegrations cover exactly the intervals between keyframe stamps (the last
+// sample held up to the stamp), and bad samples are errors naming the frame.
+#include <dynslam/estimator/KeyframeImu.h>
+
+#include <gtest/gtest.h>
+
+using namespace dynslam::estimator;
+
+namespace {
+
+std::vector<dynslam::core::ImuSample> samples(double from, double to, double rate, double wz) {
+  std::vector<dynslam::core::ImuSample> out;
+  for (double t = from; t <= to + 1e-9; t += 1.0 / rate) {
+    dynslam::core::ImuSample s;
+    s.t = t;
+    s.gyro = Eigen::Vector3d(0, 0, wz);
+    s.acc = Eigen::Vector3d(0, 0, 9.81);
+    s.has_gyro = s.has_acc = true;
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(KeyframeImu, PreintegrationsSpanTheKeyframeIntervals) {
+  KeyframeImu imu(ImuNoise{});
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  imu.addSamples(samples(0.0, 0.0301, 200, 1.0), 0);  // samples up to 0.030, frame at 0.0333
+  EXPECT_EQ(imu.cutAt(0.0333, zero, zero), nullptr) << "the first keyframe has none";
+  imu.addSamples(samples(0.035, 0.0666, 200, 1.0), 1);
+  EXPECT_NEAR(imu.peekAt(0.068)->sumDt(), 0.068 - 0.0333, 1e-9) << "peek extends to its time";
+  imu.addSamples(samples(0.070, 0.1, 200, 1.0), 2);
+  const auto pre = imu.cutAt(0.1, zero, zero);
+  ASSERT_TRUE(pre);
+  EXPECT_NEAR(pre->sumDt(), 0.1 - 0.0333, 1e-9);
+  // A constant 1 rad/s about z: the preintegrated rotation is exactly the interval's angle.
+  EXPECT_NEAR(Eigen::AngleAxisd(pre->gamma()).angle(), 0.1 - 0.0333, 1e-9);
+}
+
+TEST(KeyframeImu, NonFiniteAndOutOfOrderSamplesNameTheFrame) {
+  KeyframeImu imu(ImuNoise{});
+  auto s = samples(0.0, 0.01, 200, 0.0);
+  imu.addSamples(s, 0);
+  try {
+    imu.addSamples(samples(0.005, 0.006, 200, 0.0), 7);
+    FAIL() << "out-of-order sample accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("frame 7"), std::string::npos) << e.what();
+  }
+  auto bad = samples(0.02, 0.02, 200, 0.0);
+  bad[0].gyro.x() = NAN;
+  EXPECT_THROW(imu.addSamples(bad, 8), std::runtime_error);
+}
