@@ -37,6 +37,12 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     fn += truthDynamic && !predicted;
     tn += !truthDynamic && !predicted;
     if (!truthDynamic && predicted) ++(row ? fpNonMovingObject : fpBackground);
+    if (f.depth > 0) {
+      tpDepth += truthDynamic && predicted;
+      fpDepth += !truthDynamic && predicted;
+      fnDepth += truthDynamic && !predicted;
+      tnDepth += !truthDynamic && !predicted;
+    }
     if (truthDynamic && !predicted) ++(f.object_id < 0 ? fnNoObject : fnJudgedStatic);
     if (row) {
       ++perObject[label].first;

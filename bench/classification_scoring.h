@@ -32,6 +32,10 @@ struct ClassificationScore {
   /// membership that took background) vs on non-moving objects (judged moving); false negatives
   /// on features given to no object (no mask held them) vs on objects judged static.
   size_t fpBackground = 0, fpNonMovingObject = 0, fnNoObject = 0, fnJudgedStatic = 0;
+  /// The same four counts over the features with a depth reading only (scene flow, Eq. 11,
+  /// needs the 3-D point: beyond the sensor's range a feature can only be classified by its
+  /// object's earlier decisions).
+  size_t tpDepth = 0, fpDepth = 0, fnDepth = 0, tnDepth = 0;
   /// category -> frames a non-moving object was seen with >= 3 features, and of those, static.
   std::map<std::string, std::pair<size_t, size_t>> nonMoving;
   std::map<std::string, std::pair<size_t, size_t>> moving;  ///< same for moving: dynamic
@@ -41,6 +45,12 @@ struct ClassificationScore {
   void add(const core::Frame& frame, const Truth& truth, const Truth* previous);
   double precision() const { return tp + fp ? double(tp) / double(tp + fp) : 0; }
   double recall() const { return tp + fn ? double(tp) / double(tp + fn) : 0; }
+  double precisionWithDepth() const {
+    return tpDepth + fpDepth ? double(tpDepth) / double(tpDepth + fpDepth) : 0;
+  }
+  double recallWithDepth() const {
+    return tpDepth + fnDepth ? double(tpDepth) / double(tpDepth + fnDepth) : 0;
+  }
 };
 
 }  // namespace dynslam::bench

@@ -220,6 +220,9 @@ void run(const Settings& s) {
                 score.fnNoObject, score.fnJudgedStatic, score.tn);
     printRatio("dynamic-class precision", score.precision(), 0.95, true, "");
     printRatio("dynamic-class recall", score.recall(), 0.90, true, "");
+    std::printf("%-44s precision %.4f, recall %.4f (TP %zu FP %zu FN %zu TN %zu)\n",
+                "  features with depth only:", score.precisionWithDepth(), score.recallWithDepth(),
+                score.tpDepth, score.fpDepth, score.fnDepth, score.tnDepth);
     for (const auto& [category, n] : score.nonMoving) {
       const std::string what = "non-moving " + category + ": frames classified static";
       printRatio(what.c_str(), n.first ? double(n.second) / n.first : 0, 0.90, true, "");

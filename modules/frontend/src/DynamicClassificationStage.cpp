@@ -32,6 +32,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
     throw core::ConfigError("[" + s + "] speed_statistic = '" + stat +
                             "': expected median_flow or mean_norm");
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
+  p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
   p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
   p.rigid.ransac.sample_size = c.read_int(s, "rigid_sample_size", p.rigid.ransac.sample_size);
@@ -43,6 +44,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
       c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);
   p.camera.min_inliers = c.read_int(s, "camera_min_inliers", p.camera.min_inliers);
   p.camera.depth_sigma_z2 = c.read_double(s, "depth_sigma_z2", p.camera.depth_sigma_z2);
+  p.rigid.depth_sigma_z2 = p.camera.depth_sigma_z2;
   p.seed = std::uint32_t(c.read_int(s, "seed", int(p.seed)));
 }
 
@@ -55,6 +57,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "frames the scene flow spans at most (1: frame to frame, the method; see the header)");
   write(c, s, "speed_statistic", std::string(statisticName(p.speed_statistic)),
         "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
+  write(c, s, "speed_noise_sigmas", p.speed_noise_sigmas,
+        "dynamic when speed > speed_threshold + this * the speed's noise (0: the method)");
   write(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
   write(c, s, "depth_window", p.depth_window,
@@ -74,7 +78,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
   write(c, s, "camera_min_inliers", p.camera.min_inliers,
         "fewer background inliers: IMU rotation / constant velocity instead");
   write(c, s, "depth_sigma_z2", p.camera.depth_sigma_z2,
-        "1/m; depth noise sigma = this * z^2: gates/weights the camera translation's pairs");
+        "1/m; depth noise sigma = this * z^2: gates/weights the camera translation's pairs and "
+        "weighs the rigid sets' precise registration (0: unweighted)");
   write(c, s, "seed", int(p.seed), "seed of the RANSAC draws (runs are repeatable)");
 }
 
@@ -87,6 +92,8 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
   };
   if (!(p.speed_threshold >= 0))
     fail("speed_threshold", std::to_string(p.speed_threshold), "must be >= 0");
+  if (!(p.speed_noise_sigmas >= 0))
+    fail("speed_noise_sigmas", std::to_string(p.speed_noise_sigmas), "must be >= 0");
   if (p.speed_window < 1) fail("speed_window", std::to_string(p.speed_window), "must be >= 1");
   if (p.min_flow_features < 1)
     fail("min_flow_features", std::to_string(p.min_flow_features), "must be >= 1");

@@ -154,6 +154,7 @@ void DynamicClassifier::process(core::Frame& frame) {
 
   // 3. Each object's speed from its features' scene flow over the window.
   std::map<int, std::vector<Eigen::Vector3d>> velocities;
+  std::map<int, double> velocityVar;  // sum over the object's features
   std::map<int, const ObjectRegion*> seen;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     const auto& c = cur[i];
@@ -167,6 +168,13 @@ void DynamicClassifier::process(core::Frame& frame) {
       if (o.frame + window < now || o.frame >= now || !(frame.t > o.t)) continue;
       const Eigen::Vector3d F = sceneFlow(o.P, c.P, cameraFromPast(o.frame));
       velocities[c.region->object_id].push_back(F / (frame.t - o.t));
+      // Variance of that velocity from the depth noise of both points (the window median
+      // divides a reading's sigma by about sqrt(0.64 w^2)).
+      const double reduce = 0.8 * std::max(1, params_.depth_window);
+      const double sp = params_.camera.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
+      const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
+      const double dt = frame.t - o.t;
+      velocityVar[c.region->object_id] += (sp * sp + sq * sq) / (dt * dt);
       break;
     }
   }
@@ -179,7 +187,10 @@ void DynamicClassifier::process(core::Frame& frame) {
     s.features = v == velocities.end() ? 0 : int(v->second.size());
     if (s.features >= std::max(1, params_.min_flow_features)) {
       s.speed = objectSpeed(v->second, params_.speed_statistic);
-      s.dynamic = s.speed > params_.speed_threshold;
+      // The median of n velocities has about 1.25 sigma / sqrt(n) of noise (sigma: their rms).
+      const double n = double(s.features);
+      const double noise = 1.25 * std::sqrt(velocityVar[id] / n) / std::sqrt(n);
+      s.dynamic = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
     } else {
       const auto last = previousDecision.find(id);
       if (last != previousDecision.end()) {

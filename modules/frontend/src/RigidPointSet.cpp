@@ -37,11 +37,18 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
       stillTracked.push_back(int(i));
   }
   const auto minMembers = size_t(std::max(3, params_.min_members));
+  std::vector<double> weights;
+  if (params_.depth_sigma_z2 > 0)
+    for (size_t i = 0; i < pairs.size(); ++i) {
+      const double sp = 0.001 + params_.depth_sigma_z2 * p[i].z() * p[i].z();
+      const double sq = 0.001 + params_.depth_sigma_z2 * q[i].z() * q[i].z();
+      weights.push_back(1.0 / (sp * sp + sq * sq));
+    }
 
   // Continuation: hypotheses from the surviving members, plus the last motion (an object
   // moves smoothly from one frame to the next), inliers over all pairs.
   if (exists() && int(stillTracked.size()) >= params_.ransac.sample_size) {
-    const auto r = registerRansac(p, q, params_.ransac, rng_, stillTracked, {motion_});
+    const auto r = registerRansac(p, q, params_.ransac, rng_, stillTracked, {motion_}, weights);
     if (r && r->inliers.size() >= minMembers) {
       std::vector<std::int64_t> ids = idsOf(pairs, r->inliers);
       std::set_difference(ids.begin(), ids.end(), members_.begin(), members_.end(),
@@ -57,7 +64,7 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
 
   // Creation: the largest rigid group among all the object's pairs.
   reset();
-  const auto r = registerRansac(p, q, params_.ransac, rng_);
+  const auto r = registerRansac(p, q, params_.ransac, rng_, {}, {}, weights);
   if (!r || r->inliers.size() < minMembers) return false;
   members_ = idsOf(pairs, r->inliers);
   motion_ = r->motion;

@@ -1,6 +1,7 @@
 #include "dynslam/frontend/RigidRegistration.h"
 
 #include <Eigen/Geometry>  // Eigen::umeyama
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -19,14 +20,52 @@ Eigen::Isometry3d RigidMotion::isometry() const {
 
 RigidMotion RigidMotion::from(const Eigen::Isometry3d& T) { return {T.linear(), T.translation()}; }
 
+namespace {
+
+RigidMotion weightedKabsch(const std::vector<Eigen::Vector3d>& p,
+                           const std::vector<Eigen::Vector3d>& q, const std::vector<int>& indices,
+                           const std::vector<double>& w) {
+  const size_t n = indices.empty() ? p.size() : indices.size();
+  auto at = [&](size_t k) { return indices.empty() ? k : size_t(indices[k]); };
+  double W = 0;
+  Eigen::Vector3d mp = Eigen::Vector3d::Zero(), mq = Eigen::Vector3d::Zero();
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = at(k);
+    W += w[i];
+    mp += w[i] * p[i];
+    mq += w[i] * q[i];
+  }
+  if (!(W > 0)) throw std::invalid_argument("kabsch: the weights of the pairs sum to zero");
+  mp /= W;
+  mq /= W;
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = at(k);
+    H += w[i] * (q[i] - mq) * (p[i] - mp).transpose();
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d S = Eigen::Matrix3d::Identity();
+  if (svd.matrixU().determinant() * svd.matrixV().determinant() < 0) S(2, 2) = -1;
+  const Eigen::Matrix3d R = svd.matrixU() * S * svd.matrixV().transpose();
+  return {R, mq - R * mp};
+}
+
+}  // namespace
+
 RigidMotion kabsch(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
-                   const std::vector<int>& indices) {
+                   const std::vector<int>& indices, const std::vector<double>& weights) {
   if (p.size() != q.size())
     throw std::invalid_argument("kabsch: " + std::to_string(p.size()) + " points p but " +
                                 std::to_string(q.size()) + " points q");
   const Eigen::Index n = indices.empty() ? Eigen::Index(p.size()) : Eigen::Index(indices.size());
   if (n < 3)
     throw std::invalid_argument("kabsch: needs at least 3 point pairs, got " + std::to_string(n));
+  if (!weights.empty()) {
+    if (weights.size() != p.size())
+      throw std::invalid_argument("kabsch: " + std::to_string(weights.size()) + " weights for " +
+                                  std::to_string(p.size()) + " pairs");
+    return weightedKabsch(p, q, indices, weights);
+  }
   Eigen::Matrix3Xd src(3, n), dst(3, n);
   for (Eigen::Index k = 0; k < n; ++k) {
     const size_t i = indices.empty() ? size_t(k) : size_t(indices[size_t(k)]);
@@ -52,7 +91,8 @@ std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector
                                                  const std::vector<Eigen::Vector3d>& q,
                                                  const RansacParams& params, std::mt19937& rng,
                                                  const std::vector<int>& candidates,
-                                                 const std::vector<RigidMotion>& extra) {
+                                                 const std::vector<RigidMotion>& extra,
+                                                 const std::vector<double>& weights) {
   if (p.size() != q.size())
     throw std::invalid_argument("registerRansac: point counts differ (" +
                                 std::to_string(p.size()) + " vs " + std::to_string(q.size()) +
@@ -83,12 +123,12 @@ std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector
   }
   if (best.size() < 3) return std::nullopt;
   RegistrationResult r;
-  r.motion = kabsch(p, q, best);
+  r.motion = kabsch(p, q, best, weights);
   r.inliers = inliersOf(r.motion, p, q, params.inlier_threshold);
   if (r.inliers.size() < 3) {  // the refit lost points: keep the hypothesis' own set
     r.inliers = best;
   } else if (r.inliers != best) {
-    r.motion = kabsch(p, q, r.inliers);
+    r.motion = kabsch(p, q, r.inliers, weights);
   }
   return r;
 }

@@ -32,6 +32,29 @@ TEST(RigidRegistration, KabschRecoversAnExactMotion) {
   EXPECT_THROW(kabsch({p[0], p[1]}, {q[0], q[1]}), std::invalid_argument);
 }
 
+TEST(RigidRegistration, WeightedKabschFollowsTheWeights) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const RigidMotion m = knownMotion();
+  std::vector<Eigen::Vector3d> p, q;
+  for (int i = 0; i < 12; ++i) {
+    p.emplace_back(u(rng), u(rng), 3 + u(rng));
+    q.push_back(m.apply(p.back()));
+  }
+  // Equal weights: the same solution as the unweighted one.
+  const RigidMotion plain = kabsch(p, q), equal = kabsch(p, q, {}, std::vector<double>(12, 2.0));
+  EXPECT_LT((plain.R - equal.R).norm(), 1e-9);
+  EXPECT_LT((plain.t - equal.t).norm(), 1e-9);
+  // One pair displaced by 20 cm: with a tiny weight it hardly moves the solution.
+  q[3] += Eigen::Vector3d(0.2, 0, 0);
+  std::vector<double> w(12, 1.0);
+  w[3] = 1e-6;
+  const RigidMotion weighted = kabsch(p, q, {}, w), unweighted = kabsch(p, q);
+  EXPECT_LT((weighted.t - m.t).norm(), 1e-5);
+  EXPECT_GT((unweighted.t - m.t).norm(), 1e-3);
+  EXPECT_THROW(kabsch(p, q, {}, std::vector<double>(5, 1.0)), std::invalid_argument);
+}
+
 TEST(RigidRegistration, RansacRecoversMotionAndInliersWithFortyPercentOutliers) {
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> u(-1, 1);

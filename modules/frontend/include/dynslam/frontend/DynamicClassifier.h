@@ -31,6 +31,10 @@
 // with that object while its track lives, unless the object's mask box holds the pixel (then the
 // mask says the feature left it): a detector miss (the track coasts) or a box a few pixels
 // short does not throw the object's features into the background.
+//  - speed_noise_sigmas (default 2): the speed must exceed the threshold by twice its expected
+//    noise. A parked car 8 m away has sigma(z) = 10 cm per reading: even with the window depth
+//    and a third of a second its features' velocities scatter by ~0.1 m/s, the threshold
+//    itself, while a person a metre away measures to a few mm/s. 0: the plain threshold.
 // An object whose features have no flow yet (it has just appeared) keeps its last decision;
 // a new track takes the majority decision of the objects its features were on in the last frame
 // (trackers re-number objects); without either it counts as dynamic: it is not trusted to
@@ -52,6 +56,10 @@ struct DynamicClassifierParams {
   double speed_threshold = 0.1;  ///< m/s (method.md)
   int speed_window = 10;         ///< frames the scene flow spans at most (1: the method's)
   SpeedStatistic speed_statistic = SpeedStatistic::MedianFlow;
+  /// Dynamic only when the speed exceeds speed_threshold by this many sigmas of its own noise
+  /// (from the depth noise model camera.depth_sigma_z2 and the features' depths and spans);
+  /// 0: the plain threshold of the method. See the file comment.
+  double speed_noise_sigmas = 2.0;
   int min_flow_features = 3;     ///< fewer features with flow: the speed is not measured
   /// Side of the window whose robust median depth places each feature in 3-D (1: the
   /// feature's own depth reading). See the file comment.

@@ -34,6 +34,10 @@ struct PointPair {
 struct RigidPointSetParams {
   RansacParams ransac;  ///< 4 pairs, 100 iterations, tau = 0.03 m (method.md)
   int min_members = 5;  ///< fewer inliers than this: no rigid set on the object this frame
+  /// Depth noise sigma(z) = depth_sigma_z2 z^2 (1/m): the precise registration weighs each
+  /// inlier by the inverse variance of its pair (a car's far points are metres apart in noise
+  /// from its near ones). 0: equal weights, the method's plain least squares.
+  double depth_sigma_z2 = 0.0015;
 };
 
 /// What the last update did to the membership.

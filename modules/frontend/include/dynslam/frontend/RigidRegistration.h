@@ -38,8 +38,10 @@ struct RegistrationResult {
 /// Least-squares motion of the pairs `indices` (all pairs when empty): centroids removed, R by
 /// SVD with the reflection fixed, t = mean(q) - R mean(p). Needs >= 3 pairs (throws
 /// std::invalid_argument otherwise); degenerate (collinear) sets give some minimiser.
+/// `weights` (one per pair, all pairs; empty: equal) minimise sum w_i |q_i - R p_i - t|^2
+/// instead: weighted centroids and cross-covariance (Eigen::umeyama has no weights).
 RigidMotion kabsch(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
-                   const std::vector<int>& indices = {});
+                   const std::vector<int>& indices = {}, const std::vector<double>& weights = {});
 
 /// Indices i with |motion(p_i) - q_i| < threshold, ascending.
 std::vector<int> inliersOf(const RigidMotion& motion, const std::vector<Eigen::Vector3d>& p,
@@ -50,14 +52,15 @@ std::vector<int> inliersOf(const RigidMotion& motion, const std::vector<Eigen::V
 /// inliers are counted over ALL pairs, and the largest inlier set wins (first found on ties).
 /// `extra` hypotheses (a motion predicted from the IMU, the previous frame's motion) compete
 /// with the drawn ones. The precise registration is the Kabsch motion of the winner's inliers,
-/// whose inliers are then recounted once. nullopt when fewer than sample_size pairs (or
-/// candidates) exist or the best set has fewer than 3 inliers. Deterministic for a given `rng`
-/// state.
+/// whose inliers are then recounted once; `weights` (per pair, empty: equal) weigh that precise
+/// fit only. nullopt when fewer than sample_size pairs (or candidates) exist or the best set has
+/// fewer than 3 inliers. Deterministic for a given `rng` state.
 std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector3d>& p,
                                                  const std::vector<Eigen::Vector3d>& q,
                                                  const RansacParams& params, std::mt19937& rng,
                                                  const std::vector<int>& candidates = {},
-                                                 const std::vector<RigidMotion>& extra = {});
+                                                 const std::vector<RigidMotion>& extra = {},
+                                                 const std::vector<double>& weights = {});
 
 /// Rotation angle of R, degrees.
 double rotationAngleDeg(const Eigen::Matrix3d& R);
