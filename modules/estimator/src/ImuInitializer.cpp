@@ -4,9 +4,9 @@
 
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 namespace dynslam::estimator {
 namespace {
@@ -150,8 +150,8 @@ std::string checkInput(const std::vector<ImuInitKeyframe>& keyframes,
   if (keyframes.size() < 4) {
     why << "needs at least 4 keyframes, got " << keyframes.size();
   } else if (pre.size() + 1 != keyframes.size()) {
-    why << "needs one preintegration per consecutive pair: " << keyframes.size()
-        << " keyframes, " << pre.size() << " preintegrations";
+    why << "needs one preintegration per consecutive pair: " << keyframes.size() << " keyframes, "
+        << pre.size() << " preintegrations";
   } else if (!(options.gravity_magnitude > 0)) {
     why << "gravity_magnitude must be > 0";
   } else {
@@ -176,6 +176,7 @@ std::string checkInput(const std::vector<ImuInitKeyframe>& keyframes,
 
 Eigen::Vector3d estimateGyroBias(const std::vector<ImuInitKeyframe>& keyframes,
                                  const std::vector<ImuPreintegration*>& pre, int iterations) {
+  if (pre.empty() || keyframes.size() != pre.size() + 1) return Eigen::Vector3d::Zero();
   Eigen::Vector3d bg = pre.front()->linearizedBg();
   for (int it = 0; it < iterations; ++it) {
     // gamma_k(bg + d) ~ gamma_k(bg) Exp(J_k d) = R_i^T R_j  =>  J_k d = Log(gamma_k^-1 R_i^T R_j).
@@ -185,7 +186,8 @@ Eigen::Vector3d estimateGyroBias(const std::vector<ImuInitKeyframe>& keyframes,
       const Eigen::Quaterniond qi(keyframes[k].T_world_body.rotation());
       const Eigen::Quaterniond qj(keyframes[k + 1].T_world_body.rotation());
       const Eigen::Matrix3d J = pre[k]->jacobian().block<3, 3>(kR, kBg);
-      const Eigen::Vector3d r = rotationLog(pre[k]->deltaRotation(bg).inverse() * qi.inverse() * qj);
+      const Eigen::Vector3d r =
+          rotationLog(pre[k]->deltaRotation(bg).inverse() * qi.inverse() * qj);
       H += J.transpose() * J;
       g += J.transpose() * r;
     }
@@ -214,12 +216,13 @@ ImuInitialization initializeImu(const std::vector<ImuInitKeyframe>& keyframes,
   out.gyro_bias = estimateGyroBias(keyframes, pre, std::max(1, options.gyro_bias_iterations));
 
   // 2. Free linear alignment: velocities and an unconstrained g.
-  const Alignment unconstrained = solveAlignment(keyframes, pre, Eigen::Vector3d::Zero(),
-                                        Eigen::MatrixXd::Identity(3, 3));
+  const Alignment unconstrained =
+      solveAlignment(keyframes, pre, Eigen::Vector3d::Zero(), Eigen::MatrixXd::Identity(3, 3));
   out.free_gravity_norm = unconstrained.gravity.norm();
   if (!(out.free_gravity_norm > 1e-6)) {
-    out.reason = "the free alignment gives no gravity (|g| = " +
-                 std::to_string(out.free_gravity_norm) + " m/s^2)";
+    out.reason =
+        "the free alignment gives no gravity (|g| = " + std::to_string(out.free_gravity_norm) +
+        " m/s^2)";
     return out;
   }
 
@@ -230,15 +233,15 @@ ImuInitialization initializeImu(const std::vector<ImuInitKeyframe>& keyframes,
     const Alignment step = solveAlignment(keyframes, pre, G * direction, tangentBasis(direction));
     direction = step.gravity.normalized();
   }
-  const Alignment fixed =
-      solveAlignment(keyframes, pre, G * direction, Eigen::MatrixXd(3, 0));
+  const Alignment fixed = solveAlignment(keyframes, pre, G * direction, Eigen::MatrixXd(3, 0));
   out.gravity_world = fixed.gravity;
   out.velocities_world = fixed.velocities;
   out.position_rms = fixed.position_rms;
   out.velocity_rms = fixed.velocity_rms;
   out.R_gravity_world = rotationToGravityFrame(out.gravity_world);
 
-  std::tie(out.visual_scale, out.visual_scale_sigma) = estimateVisualScale(keyframes, pre, options.visual_position_noise);
+  std::tie(out.visual_scale, out.visual_scale_sigma) =
+      estimateVisualScale(keyframes, pre, options.visual_position_noise);
 
   double sa = 0;
   for (size_t k = 0; k < pre.size(); ++k) {

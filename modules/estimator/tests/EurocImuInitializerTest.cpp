@@ -124,12 +124,13 @@ std::vector<WindowResult> runWindows(const std::string& dir, bool removeTrueAccB
     for (int k = 0; k < kKeyframes; ++k)
       velocityError = std::max(velocityError, (r.velocities_world[k] - trueVelocities[k]).norm());
     if (!removeTrueAccBias)  // one line per window, for the zero-bias run only
-      std::cout << "window at +" << 1e-9 * double(start - gtAt.begin()->first) << " s: "
-              << (r.success ? "accepted" : "refused (" + r.reason + ")") << "; gyro bias error "
-              << biasError << " rad/s, gravity " << gravityDeg << " deg, worst velocity "
-              << velocityError << " m/s, acceleration RMS " << r.acceleration_rms
-              << " m/s^2, visual scale " << r.visual_scale << " +- " << r.visual_scale_sigma
-              << ", residual RMS " << r.position_rms << " m / " << r.velocity_rms << " m/s\n";
+      std::cout << "window at +" << 1e-9 * double(start - gtAt.begin()->first)
+                << " s: " << (r.success ? "accepted" : "refused (" + r.reason + ")")
+                << "; gyro bias error " << biasError << " rad/s, gravity " << gravityDeg
+                << " deg, worst velocity " << velocityError << " m/s, acceleration RMS "
+                << r.acceleration_rms << " m/s^2, visual scale " << r.visual_scale << " +- "
+                << r.visual_scale_sigma << ", residual RMS " << r.position_rms << " m / "
+                << r.velocity_rms << " m/s\n";
     results.push_back({r.success, biasError, gravityDeg, velocityError});
   }
   return results;

@@ -154,6 +154,22 @@ TEST(ImuInitializer, ExactSamplesGiveGyroBiasGravityAndVelocities) {
     // R_gravity_world levels the world; the preintegrations were repropagated at the bias.
     EXPECT_LT((r.R_gravity_world * r.gravity_world - Eigen::Vector3d(0, 0, -9.81)).norm(), 1e-9);
     for (const auto& pre : seq.preintegrations) EXPECT_EQ(pre->linearizedBg(), r.gyro_bias);
+
+    // What the sliding window does with the result: level the world with R_gravity_world and
+    // predict with gravity (0, 0, -9.81). Each preintegration must carry keyframe k to k + 1.
+    const Eigen::Matrix3d& R = r.R_gravity_world;
+    for (int k = 0; k + 1 < keyframes; ++k) {
+      const Eigen::Isometry3d& Ti = seq.keyframes[k].T_world_body;
+      const Eigen::Isometry3d& Tj = seq.keyframes[k + 1].T_world_body;
+      Eigen::Vector3d p, v;
+      Eigen::Quaterniond q;
+      seq.preintegrations[k]->predict(R * Ti.translation(), Eigen::Quaterniond(R * Ti.rotation()),
+                                      R * r.velocities_world[k], Eigen::Vector3d::Zero(),
+                                      r.gyro_bias, Eigen::Vector3d(0, 0, -9.81), p, q, v);
+      EXPECT_LT((p - R * Tj.translation()).norm(), 1e-4) << "pair " << k;
+      EXPECT_LT((v - R * r.velocities_world[k + 1]).norm(), 1e-4) << "pair " << k;
+      EXPECT_LT(q.angularDistance(Eigen::Quaterniond(R * Tj.rotation())), 1e-6) << "pair " << k;
+    }
   }
 }
 
@@ -263,7 +279,8 @@ TEST(ImuInitializer, WrongVisualScaleIsRefusedWhenTheDataCanTell) {
             << ", residual RMS " << r.position_rms << " m / " << r.velocity_rms << " m/s\n";
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.reason.find("inconsistent: the IMU sees the visual positions at scale 0.833"),
-            std::string::npos) << r.reason;
+            std::string::npos)
+      << r.reason;
 
   // ... while with the default noise models (ImuNoise{}'s inflated IMU, 1 cm poses) the scale
   // is known to +-13 % only over these 2.7 s, and 20 % passes.
