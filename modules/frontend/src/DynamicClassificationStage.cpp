@@ -39,6 +39,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.rigid.ransac.inlier_threshold =
       c.read_double(s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold);
   p.rigid.min_members = c.read_int(s, "rigid_min_members", p.rigid.min_members);
+  p.rigid.noise_gates = c.read_bool(s, "rigid_noise_gates", p.rigid.noise_gates);
   p.camera.ransac.iterations = c.read_int(s, "camera_iterations", p.camera.ransac.iterations);
   p.camera.ransac.inlier_threshold =
       c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);
@@ -71,6 +72,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "m; |R p + t - q| below this joins the rigid set (method.md tau: 0.03)");
   write(c, s, "rigid_min_members", p.rigid.min_members,
         "fewer inliers than this: no rigid set on the object this frame");
+  write(c, s, "rigid_noise_gates", p.rigid.noise_gates,
+        "true: a pair noisier than tau gets 3 sigma of its depth noise as gate; false: tau");
   write(c, s, "camera_iterations", p.camera.ransac.iterations,
         "RANSAC hypotheses of the camera motion from background points");
   write(c, s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold,

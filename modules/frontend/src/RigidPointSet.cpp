@@ -1,6 +1,7 @@
 #include "dynslam/frontend/RigidPointSet.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dynslam::frontend {
 namespace {
@@ -37,18 +38,22 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
       stillTracked.push_back(int(i));
   }
   const auto minMembers = size_t(std::max(3, params_.min_members));
-  std::vector<double> weights;
+  std::vector<double> weights, gates;
   if (params_.depth_sigma_z2 > 0)
     for (size_t i = 0; i < pairs.size(); ++i) {
-      const double sp = 0.001 + params_.depth_sigma_z2 * p[i].z() * p[i].z();
-      const double sq = 0.001 + params_.depth_sigma_z2 * q[i].z() * q[i].z();
+      const double k = params_.depth_sigma_z2 / std::max(1.0, params_.point_noise_reduction);
+      const double sp = 0.001 + k * p[i].z() * p[i].z();
+      const double sq = 0.001 + k * q[i].z() * q[i].z();
       weights.push_back(1.0 / (sp * sp + sq * sq));
+      if (params_.noise_gates)
+        gates.push_back(std::max(params_.ransac.inlier_threshold, 3 * std::sqrt(sp * sp + sq * sq)));
     }
 
   // Continuation: hypotheses from the surviving members, plus the last motion (an object
   // moves smoothly from one frame to the next), inliers over all pairs.
   if (exists() && int(stillTracked.size()) >= params_.ransac.sample_size) {
-    const auto r = registerRansac(p, q, params_.ransac, rng_, stillTracked, {motion_}, weights);
+    const auto r =
+        registerRansac(p, q, params_.ransac, rng_, stillTracked, {motion_}, weights, gates);
     if (r && r->inliers.size() >= minMembers) {
       std::vector<std::int64_t> ids = idsOf(pairs, r->inliers);
       std::set_difference(ids.begin(), ids.end(), members_.begin(), members_.end(),
@@ -64,7 +69,7 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
 
   // Creation: the largest rigid group among all the object's pairs.
   reset();
-  const auto r = registerRansac(p, q, params_.ransac, rng_, {}, {}, weights);
+  const auto r = registerRansac(p, q, params_.ransac, rng_, {}, {}, weights, gates);
   if (!r || r->inliers.size() < minMembers) return false;
   members_ = idsOf(pairs, r->inliers);
   motion_ = r->motion;

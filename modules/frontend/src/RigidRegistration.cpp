@@ -79,11 +79,14 @@ RigidMotion kabsch(const std::vector<Eigen::Vector3d>& p, const std::vector<Eige
 }
 
 std::vector<int> inliersOf(const RigidMotion& motion, const std::vector<Eigen::Vector3d>& p,
-                           const std::vector<Eigen::Vector3d>& q, double threshold) {
+                           const std::vector<Eigen::Vector3d>& q, double threshold,
+                           const std::vector<double>& gates) {
   std::vector<int> inliers;
   const double t2 = threshold * threshold;
-  for (size_t i = 0; i < p.size(); ++i)
-    if ((motion.apply(p[i]) - q[i]).squaredNorm() < t2) inliers.push_back(int(i));
+  for (size_t i = 0; i < p.size(); ++i) {
+    const double g2 = gates.empty() ? t2 : gates[i] * gates[i];
+    if ((motion.apply(p[i]) - q[i]).squaredNorm() < g2) inliers.push_back(int(i));
+  }
   return inliers;
 }
 
@@ -92,11 +95,15 @@ std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector
                                                  const RansacParams& params, std::mt19937& rng,
                                                  const std::vector<int>& candidates,
                                                  const std::vector<RigidMotion>& extra,
-                                                 const std::vector<double>& weights) {
+                                                 const std::vector<double>& weights,
+                                                 const std::vector<double>& gates) {
   if (p.size() != q.size())
     throw std::invalid_argument("registerRansac: point counts differ (" +
                                 std::to_string(p.size()) + " vs " + std::to_string(q.size()) +
                                 ")");
+  if (!gates.empty() && gates.size() != p.size())
+    throw std::invalid_argument("registerRansac: " + std::to_string(gates.size()) +
+                                " gates for " + std::to_string(p.size()) + " pairs");
   std::vector<int> pool = candidates;
   if (pool.empty()) {
     pool.resize(p.size());
@@ -105,7 +112,7 @@ std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector
   const int k = std::max(3, params.sample_size);
   std::vector<int> best;
   auto consider = [&](const RigidMotion& m) {
-    std::vector<int> in = inliersOf(m, p, q, params.inlier_threshold);
+    std::vector<int> in = inliersOf(m, p, q, params.inlier_threshold, gates);
     if (in.size() > best.size()) best = std::move(in);
   };
   for (const auto& m : extra) consider(m);
@@ -124,7 +131,7 @@ std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector
   if (best.size() < 3) return std::nullopt;
   RegistrationResult r;
   r.motion = kabsch(p, q, best, weights);
-  r.inliers = inliersOf(r.motion, p, q, params.inlier_threshold);
+  r.inliers = inliersOf(r.motion, p, q, params.inlier_threshold, gates);
   if (r.inliers.size() < 3) {  // the refit lost points: keep the hypothesis' own set
     r.inliers = best;
   } else if (r.inliers != best) {

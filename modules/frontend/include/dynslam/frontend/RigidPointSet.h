@@ -38,6 +38,11 @@ struct RigidPointSetParams {
   /// inlier by the inverse variance of its pair (a car's far points are metres apart in noise
   /// from its near ones). 0: equal weights, the method's plain least squares.
   double depth_sigma_z2 = 0.0015;
+  /// Points whose depth noise exceeds tau (far ones) get the inlier gate 3 sigma of their
+  /// pair instead of tau (sigma of a point: depth_sigma_z2 z^2 / point_noise_reduction, the
+  /// reduction of the window depth); false: tau for every pair, the method.
+  bool noise_gates = true;
+  double point_noise_reduction = 4.0;
 };
 
 /// What the last update did to the membership.

@@ -43,9 +43,11 @@ struct RegistrationResult {
 RigidMotion kabsch(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
                    const std::vector<int>& indices = {}, const std::vector<double>& weights = {});
 
-/// Indices i with |motion(p_i) - q_i| < threshold, ascending.
+/// Indices i with |motion(p_i) - q_i| < threshold (gates[i] when `gates` is not empty: one
+/// threshold per pair), ascending.
 std::vector<int> inliersOf(const RigidMotion& motion, const std::vector<Eigen::Vector3d>& p,
-                           const std::vector<Eigen::Vector3d>& q, double threshold);
+                           const std::vector<Eigen::Vector3d>& q, double threshold,
+                           const std::vector<double>& gates = {});
 
 /// Coarse + precise registration (method.md section 4). Each of `iterations` hypotheses is the
 /// Kabsch motion of `sample_size` distinct pairs drawn from `candidates` (all pairs when empty);
@@ -53,14 +55,16 @@ std::vector<int> inliersOf(const RigidMotion& motion, const std::vector<Eigen::V
 /// `extra` hypotheses (a motion predicted from the IMU, the previous frame's motion) compete
 /// with the drawn ones. The precise registration is the Kabsch motion of the winner's inliers,
 /// whose inliers are then recounted once; `weights` (per pair, empty: equal) weigh that precise
-/// fit only. nullopt when fewer than sample_size pairs (or candidates) exist or the best set has
-/// fewer than 3 inliers. Deterministic for a given `rng` state.
+/// fit only; `gates` (per pair, m; empty: params.inlier_threshold for all) replace the inlier
+/// threshold pair by pair. nullopt when fewer than sample_size pairs (or candidates) exist or
+/// the best set has fewer than 3 inliers. Deterministic for a given `rng` state.
 std::optional<RegistrationResult> registerRansac(const std::vector<Eigen::Vector3d>& p,
                                                  const std::vector<Eigen::Vector3d>& q,
                                                  const RansacParams& params, std::mt19937& rng,
                                                  const std::vector<int>& candidates = {},
                                                  const std::vector<RigidMotion>& extra = {},
-                                                 const std::vector<double>& weights = {});
+                                                 const std::vector<double>& weights = {},
+                                                 const std::vector<double>& gates = {});
 
 /// Rotation angle of R, degrees.
 double rotationAngleDeg(const Eigen::Matrix3d& R);
