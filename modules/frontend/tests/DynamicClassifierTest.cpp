@@ -177,6 +177,25 @@ TEST(DynamicClassifier, ClassifiesMoversAndNonMovers) {
   }
 }
 
+TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoasts) {
+  const Scene scene;
+  DynamicClassifier classifier;
+  core::Frame f;
+  for (int k = 0; k < 12; ++k) {
+    f = scene.frame(k);
+    if (k == 11) f.object_masks.erase(f.object_masks.begin());  // the walker's detection missed
+    classifier.process(f);
+  }
+  int walker = 0;
+  for (const auto& feat : f.features)
+    if (feat.id >= 1000 && feat.id < 2000) {
+      ++walker;
+      EXPECT_EQ(feat.object_id, 1) << "feature " << feat.id;
+      EXPECT_NE(feat.feature_class, core::FeatureClass::Static) << "feature " << feat.id;
+    }
+  EXPECT_EQ(walker, 25);
+}
+
 TEST(DynamicClassifier, TheMethodsFrameToFrameSettingsAgreeOnCleanData) {
   const Scene scene;
   DynamicClassifierParams params;
