@@ -3,8 +3,9 @@
 // rigid point sets of the dynamic objects (section 4). Per frame:
 //  1. each feature belongs to the object whose mask holds it (ObjectMembership.h), else to the
 //     background;
-//  2. the camera's motion since the previous frame (CameraMotion.h: background registration with
-//     the gyro rotation as a hypothesis, or the poses of an earlier stage);
+//  2. the camera's motion since the previous frame (CameraMotion.h: gyro rotation and the
+//     background's registered translation, a 6-DoF background registration without a gyro, or
+//     the poses of an earlier stage);
 //  3. the scene flow F (Eq. 11) of every object feature; the object's speed is the size of its
 //     features' flow divided by the time it spans; dynamic when above speed_threshold;
 //  4. dynamic objects update their AdaptiveRigidPointSet from the frame-to-frame pairs;
@@ -13,32 +14,33 @@
 //     not move with the body (NonRigid); dynamic non-rigid objects Rigid inside the rigid set,
 //     NonRigid outside it.
 //
-// Two departures from the letter of the method, both settable back to it, and why:
+// Departures from the letter of the method, each settable back to it, and why (figures from
+// bench-classification on the simulator's D455-like depth, sigma = 1.5 mm/m^2 z^2):
 //  - speed_window (default 10 frames): F is measured from the oldest position of each feature
-//    within the window, with the composed camera motion, and divided by the time between. With
-//    a D455-like depth noise (sigma = 1.5 mm/m^2 z^2: 1.4 cm at 3 m) the frame-to-frame F of a
-//    static point is ~2 cm, 0.6 m/s at 30 Hz, six times the 0.1 m/s threshold; over a third of
-//    a second the same noise is 0.06 m/s. speed_window = 1 is the method's frame interval.
+//    within the window, with the composed camera motion, and divided by the time between. The
+//    frame-to-frame F of a static point 3 m away is ~2 cm of noise, 0.6 m/s at 30 Hz, six
+//    times the 0.1 m/s threshold. speed_window = 1 is the method's frame interval.
 //  - speed_statistic = median_flow (default): the norm of the component-wise median of the
-//    features' flow vectors, not the mean of their norms (mean_norm, the method's wording).
-//    A mean of norms adds up the noise of every feature instead of averaging it out, and one
+//    features' flow vectors, not the mean of their norms (mean_norm, the method's wording). A
+//    mean of norms adds up the noise of every feature instead of averaging it out, and one
 //    feature on a depth edge (background depth on an object pixel) moves the mean by metres.
 //  - depth_window (default 5 px): a feature's 3-D point takes the median depth of the window
 //    around it (pixels on the surface of its own reading only), not the single reading at its
 //    pixel: with independent per-pixel noise that is 4x less noise for 25 pixels, which the
 //    speed of a standing person and the rotation of a rigid set both need. 1: the reading.
-// A feature that no mask holds but that was on a tracked object in the previous frame stays
-// with that object while its track lives, unless the object's mask box holds the pixel (then the
-// mask says the feature left it): a detector miss (the track coasts) or a box a few pixels
-// short does not throw the object's features into the background.
 //  - speed_noise_sigmas (default 2): the speed must exceed the threshold by twice its expected
-//    noise. A parked car 8 m away has sigma(z) = 10 cm per reading: even with the window depth
-//    and a third of a second its features' velocities scatter by ~0.1 m/s, the threshold
-//    itself, while a person a metre away measures to a few mm/s. 0: the plain threshold.
-// An object whose features have no flow yet (it has just appeared) keeps its last decision;
-// a new track takes the majority decision of the objects its features were on in the last frame
-// (trackers re-number objects); without either it counts as dynamic: it is not trusted to
-// constrain the camera before it was seen to stand still.
+//    noise (from the depth noise model and the features' depths and spans). A parked car 8 m
+//    away has sigma(z) = 10 cm per reading: even with the window depth and a third of a second
+//    its features' velocities scatter by ~0.1 m/s, the threshold itself, while a person a metre
+//    away measures to a few mm/s. 0: the plain threshold.
+// Membership beyond the masks: a feature that no mask holds but that was on a tracked object in
+// the previous frame stays with that object while its track lives, unless the object's mask box
+// holds the pixel (then the mask says the feature left it): a detector miss (the track coasts)
+// or a box a few pixels short does not throw the object's features into the background.
+// Objects without a speed (fewer than min_flow_features features with flow: just appeared, or
+// beyond the depth range) keep their last decision; a new track takes the majority decision of
+// the objects its features were on in the last frame (trackers re-number objects); without
+// either it is not dynamic, as no scene flow says it moves (the method decides by flow alone).
 #include <dynslam/core/Frame.h>
 #include <dynslam/frontend/CameraMotion.h>
 #include <dynslam/frontend/RigidPointSet.h>
