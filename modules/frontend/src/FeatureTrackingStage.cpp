@@ -49,7 +49,8 @@ void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   FT_WRITE(g.quality_level, "quality_level",
            "Shi-Tomasi: keep corners with min eigenvalue >= this * the best of their cell");
   FT_WRITE(g.min_eigenvalue, "min_eigenvalue",
-           "Shi-Tomasi: and >= this (cornerMinEigenVal units; noise ~1e-5, corners 1e-3..1e-1)");
+           "Shi-Tomasi: and >= this on the scored level (cornerMinEigenVal units; noise "
+           "peaks ~6e-5 at corner_level 1, ~4e-4 at 0: use ~1e-3 there)");
   FT_WRITE(g.block_size, "block_size", "px; Shi-Tomasi gradient covariance window");
   FT_WRITE(g.grid_cols, "grid_cols", "grid cells across; new corners go to the emptiest first");
   FT_WRITE(g.grid_rows, "grid_rows", "grid cells down");

@@ -18,9 +18,10 @@ struct GridCornerParams {
   double min_distance_px = 20;  ///< no two corners (new or tracked) closer than this
   /// Shi-Tomasi: a corner's min eigenvalue must reach this fraction of its cell's best...
   double quality_level = 0.01;
-  /// ...and this absolute value (OpenCV's cornerMinEigenVal units: gradients of the 8-bit
-  /// image scaled to [0, 1]; sensor noise alone gives ~1e-5, good corners 1e-3 to 1e-1), so
-  /// a bare wall does not fill its cell with noise.
+  /// ...and this absolute value on the scored image (OpenCV's cornerMinEigenVal units:
+  /// gradients of the 8-bit image scaled to [0, 1]), so a bare wall does not fill its cell
+  /// with noise. Colour noise of sigma 3 peaks at ~6e-5 on level 1 but ~4e-4 at full
+  /// resolution (level 0: raise this to ~1e-3); corners of real texture score 1e-3 to 1e-1.
   double min_eigenvalue = 2e-4;
   int block_size = 3;  ///< Shi-Tomasi gradient covariance window, pixels
   int grid_cols = 8;   ///< cells across; new corners fill the emptiest cells first
