@@ -91,6 +91,12 @@ std::optional<RegistrationResult> CameraMotionEstimator::translationWithRotation
   r.inliers = inliersOfT(r.motion.t);
   if (r.inliers.empty()) r.inliers = best;
   r.motion.t = weightedMean(r.inliers);
+  double sw = 0, swr = 0;
+  for (int i : r.inliers) {
+    sw += 1.0 / gate2[size_t(i)];
+    swr += (d[size_t(i)] - r.motion.t).squaredNorm() / gate2[size_t(i)];
+  }
+  lastSigma_ = std::sqrt(swr / sw / double(r.inliers.size()));
   return r;
 }
 
@@ -125,6 +131,12 @@ CameraMotionEstimate CameraMotionEstimator::estimate(
   if (r && int(r->inliers.size()) >= params_.min_inliers) {
     e.motion = r->motion;
     e.inliers = int(r->inliers.size());
+    if (e.source == CameraMotionSource::Registration) {
+      double sum = 0;
+      for (int i : r->inliers) sum += (r->motion.apply(p[size_t(i)]) - q[size_t(i)]).squaredNorm();
+      lastSigma_ = std::sqrt(sum / double(r->inliers.size())) / std::sqrt(double(r->inliers.size()));
+    }
+    e.translation_sigma = lastSigma_;
   } else if (gyro_rotation) {
     e.motion = {*gyro_rotation, previous_.t};
     e.source = CameraMotionSource::ImuRotationConstantVelocity;

@@ -148,16 +148,19 @@ void DynamicClassifier::process(core::Frame& frame) {
     camera_ = cameraEstimator_.estimate(bgPrev, bgCur, gyro, prevPose_, frame.T_world_camera);
     ++counts_.camera_sources[camera_.source];
     odometry_.emplace_back(now, odometry_.back().second * camera_.motion.isometry().inverse());
+    cameraVar_.emplace_back(now, camera_.translation_sigma * camera_.translation_sigma);
   } else {
     camera_ = {};
     odometry_.emplace_back(now, Eigen::Isometry3d::Identity());
   }
   const size_t window = size_t(std::max(1, params_.speed_window));
   while (!odometry_.empty() && odometry_.front().first + window < now) odometry_.pop_front();
+  while (!cameraVar_.empty() && cameraVar_.front().first + window < now) cameraVar_.pop_front();
 
   // 3. Each object's speed from its features' scene flow over the window.
   std::map<int, std::vector<Eigen::Vector3d>> velocities;
-  std::map<int, double> velocityVar;  // sum over the object's features
+  std::map<int, double> velocityVar;    // depth-noise variances, summed over the features
+  std::map<int, double> cameraVarSum;   // camera-translation variances, summed likewise
   std::map<int, const ObjectRegion*> seen;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     const auto& c = cur[i];
@@ -178,6 +181,10 @@ void DynamicClassifier::process(core::Frame& frame) {
       const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
       const double dt = frame.t - o.t;
       velocityVar[c.region->object_id] += (sp * sp + sq * sq) / (dt * dt);
+      double cam = 0;  // the camera translations of frames (o.frame, now]
+      for (const auto& [f, var] : cameraVar_)
+        if (f > o.frame) cam += var;
+      cameraVarSum[c.region->object_id] += cam / (dt * dt);
       break;
     }
   }
@@ -190,9 +197,11 @@ void DynamicClassifier::process(core::Frame& frame) {
     s.features = v == velocities.end() ? 0 : int(v->second.size());
     if (s.features >= std::max(1, params_.min_flow_features)) {
       s.speed = objectSpeed(v->second, params_.speed_statistic);
-      // The median of n velocities has about 1.25 sigma / sqrt(n) of noise (sigma: their rms).
+      // The median of n velocities has about 1.25 sigma / sqrt(n) of depth noise (sigma: their
+      // rms); the camera's error is common to all of them and does not average out.
       const double n = double(s.features);
-      const double noise = 1.25 * std::sqrt(velocityVar[id] / n) / std::sqrt(n);
+      const double noise =
+          std::sqrt(1.5625 * velocityVar[id] / n / n + cameraVarSum[id] / n);
       s.dynamic = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
     } else {
       const auto last = previousDecision.find(id);

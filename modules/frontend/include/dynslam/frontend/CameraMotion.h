@@ -51,6 +51,9 @@ struct CameraMotionEstimate {
   RigidMotion motion;  ///< static points: q = R p + t (previous camera frame -> this one)
   CameraMotionSource source = CameraMotionSource::ConstantVelocity;
   int inliers = 0;     ///< background pairs that agree with it (registrations only)
+  /// Standard error of the translation, m (the inliers' scatter about it over their number);
+  /// 0 when not measured (poses, constant velocity).
+  double translation_sigma = 0;
 };
 
 struct CameraMotionParams {
@@ -85,6 +88,7 @@ class CameraMotionEstimator {
 
   CameraMotionParams params_;
   std::mt19937 rng_;
+  double lastSigma_ = 0;  ///< translation_sigma of the last registration
   RigidMotion previous_;
 };
 

@@ -29,7 +29,8 @@
 //    pixel: with independent per-pixel noise that is 4x less noise for 25 pixels, which the
 //    speed of a standing person and the rotation of a rigid set both need. 1: the reading.
 //  - speed_noise_sigmas (default 2): the speed must exceed the threshold by twice its expected
-//    noise (from the depth noise model and the features' depths and spans). A parked car 8 m
+//    noise (from the depth noise model and the features' depths and spans, plus the standard
+//    error of the camera translations the flow removed over its span). A parked car 8 m
 //    away has sigma(z) = 10 cm per reading: even with the window depth and a third of a second
 //    its features' velocities scatter by ~0.1 m/s, the threshold itself, while a person a metre
 //    away measures to a few mm/s. 0: the plain threshold.
@@ -109,6 +110,8 @@ class DynamicClassifier {
   std::optional<Eigen::Isometry3d> prevPose_;
   /// T_{O <- C(frame)}: camera poses in the frame of the first one, last speed_window + 1.
   std::deque<std::pair<std::size_t, Eigen::Isometry3d>> odometry_;
+  /// Variance of each frame's camera translation (m^2), frame counter -> value, same span.
+  std::deque<std::pair<std::size_t, double>> cameraVar_;
   std::unordered_map<std::int64_t, std::deque<Observation>> history_;  ///< per feature id
   std::map<int, bool> lastDynamic_;                                    ///< per object id
   std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
