@@ -12,6 +12,15 @@ namespace {
 
 const char* handlingName(DynamicHandling h) { return h == DynamicHandling::None ? "none" : "remove"; }
 
+/// The nearest rigid transform: products of many poses drift off SO(3) in floating point, and a
+/// slightly scaled rotation compounds frame after frame through the motion prediction.
+Eigen::Isometry3d rigid(const Eigen::Isometry3d& T) {
+  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+  out.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
+  out.translation() = T.translation();
+  return out;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -42,6 +51,9 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   pnp_threshold_px = c.read_double(s, "pnp_threshold_px", pnp_threshold_px);
   pnp_max_correction_m = c.read_double(s, "pnp_max_correction_m", pnp_max_correction_m);
   pnp_max_correction_deg = c.read_double(s, "pnp_max_correction_deg", pnp_max_correction_deg);
+  max_speed = c.read_double(s, "max_speed", max_speed);
+  max_gyro_bias = c.read_double(s, "max_gyro_bias", max_gyro_bias);
+  max_acc_bias = c.read_double(s, "max_acc_bias", max_acc_bias);
   use_imu = c.read_bool(s, "use_imu", use_imu);
   auto& n = window.imu_noise;
   n.acc_noise = c.read_double(s, "acc_noise", n.acc_noise);
@@ -103,6 +115,9 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   write("gravity", imu_init.gravity_magnitude, "m/s^2; local gravity");
   write("init_min_acceleration_rms", imu_init.min_acceleration_rms,
         "m/s^2; IMU initialization waits for this much motion (0: still starts accepted)");
+  write("max_speed", max_speed, "m/s; a faster estimate is a failure (window restarted)");
+  write("max_gyro_bias", max_gyro_bias, "rad/s; a larger gyro bias estimate is a failure");
+  write("max_acc_bias", max_acc_bias, "m/s^2; a larger accelerometer bias estimate is a failure");
   write("dynamic_handling", std::string(handlingName(dynamic_handling)),
         "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS)");
 }
@@ -150,12 +165,24 @@ Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocit
       out.linear() = q.toRotationMatrix();
       out.translation() = p;
       if (velocity) *velocity = v;
-      return out;
+      if (!last_body_ || plausibleStep(last_body_->inverse() * out)) return out;
+      // A diverging IMU state: fall through to the visual motion model.
     }
   }
   if (velocity) velocity->setZero();
-  if (last_body_ && previous_body_) return *last_body_ * (previous_body_->inverse() * *last_body_);
-  return last_body_ ? *last_body_ : Eigen::Isometry3d::Identity();
+  if (!last_body_) return Eigen::Isometry3d::Identity();
+  if (!previous_body_) return *last_body_;
+  // Constant velocity, unless the last step was itself implausible (a failure being recovered
+  // from): extrapolating a jump would compound it frame after frame.
+  const Eigen::Isometry3d step = previous_body_->inverse() * *last_body_;
+  if (!plausibleStep(step)) return *last_body_;
+  return *last_body_ * step;
+}
+
+bool EstimatorStage::plausibleStep(const Eigen::Isometry3d& step) const {
+  return step.matrix().allFinite() && step.translation().norm() <= options_.pnp_max_correction_m &&
+         Eigen::AngleAxisd(step.rotation()).angle() * 180.0 / M_PI <=
+             options_.pnp_max_correction_deg;
 }
 
 void EstimatorStage::tryImuInitialization(double t) {
@@ -167,7 +194,8 @@ void EstimatorStage::tryImuInitialization(double t) {
   const ImuInitialization init = initializeImu(keyframes, preintegrations, options_.imu_init);
   if (!init.success) {
     if (init.reason != last_init_failure_)
-      MRPT_LOG_INFO_STREAM("IMU initialization at t = " << t << " refused: " << init.reason);
+      MRPT_LOG_INFO_STREAM("IMU initialization at t = " << t - first_t_
+                                                           << " s refused: " << init.reason);
     last_init_failure_ = init.reason;
     return;
   }
@@ -214,18 +242,13 @@ void EstimatorStage::process(core::Frame& frame) {
     FramePoseTrackerParams pnp{options_.min_pnp_inliers, options_.pnp_threshold_px};
     const auto tracked =
         trackFramePose(camera, window_->landmarkPositions(), pixels, predicted * T_ic, pnp);
-    const auto plausible = [&](const Eigen::Isometry3d& T) {
-      const Eigen::Isometry3d d = predicted.inverse() * T;
-      return d.translation().norm() <= options_.pnp_max_correction_m &&
-             Eigen::AngleAxisd(d.rotation()).angle() * 180.0 / M_PI <=
-                 options_.pnp_max_correction_deg;
-    };
-    if (tracked && plausible(tracked->T_world_camera * T_ic.inverse()))
+    if (tracked && plausibleStep(predicted.inverse() * tracked->T_world_camera * T_ic.inverse()))
       T_wb = tracked->T_world_camera * T_ic.inverse();
     else
       ++pnp_failures_;
   }
 
+  if (!T_wb.matrix().allFinite()) T_wb = last_body_ ? *last_body_ : Eigen::Isometry3d::Identity();
   if (selector_.decide(frame.t, pixels) != KeyframeSelector::Reason::NotKeyframe) {
     KeyframeInput in;
     in.t = frame.t;
@@ -238,9 +261,29 @@ void EstimatorStage::process(core::Frame& frame) {
                                                        : window_->latestAccBias(),
                                       window_->empty() ? Eigen::Vector3d::Zero()
                                                        : window_->latestGyroBias());
-    const SolveReport report = window_->addKeyframe(in);
+    SolveReport report = window_->addKeyframe(in);
     ++keyframes_;
     solve_ms_.push_back(report.solve_ms);
+    // Failure detection: a solve that fails, or moves the new keyframe implausibly far from its
+    // tracked pose, or leaves non-finite states, restarts the window.
+    if (report.usable) {
+      const Eigen::Isometry3d solved = window_->latestPose();
+      const bool finite = solved.matrix().allFinite() && window_->latestVelocity().allFinite();
+      const bool jump = !finite || !plausibleStep(T_wb.inverse() * solved);
+      const bool implausibleImu =
+          window_->usesImu() && (window_->latestVelocity().norm() > options_.max_speed ||
+                                 window_->latestGyroBias().norm() > options_.max_gyro_bias ||
+                                 window_->latestAccBias().norm() > options_.max_acc_bias);
+      if (jump || implausibleImu) {
+        report.usable = false;
+        report.message = jump ? "the keyframe moved implausibly far from its tracked pose"
+                              : "implausible velocity or IMU bias";
+      }
+    }
+    // Whatever failed, the pose to go on from is one that was plausible: the tracked pose when
+    // it was, else the last frame's.
+    if (!report.usable && last_body_ && !plausibleStep(last_body_->inverse() * T_wb))
+      T_wb = *last_body_;
     if (report.usable) {
       T_wb = window_->latestPose();
       selector_.accept(frame.t, pixels);
@@ -250,7 +293,8 @@ void EstimatorStage::process(core::Frame& frame) {
       // Solver divergence: start again from the last good pose, the trajectory stays continuous
       // (the new window is RGB-D only until the IMU initializes again).
       ++resets_;
-      MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed, window restarted");
+      MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed (" << report.message
+                                     << "), window restarted");
       startWindow(frame);
       in.T_world_body = T_wb;
       in.preintegration = nullptr;
@@ -258,6 +302,7 @@ void EstimatorStage::process(core::Frame& frame) {
       selector_.accept(frame.t, pixels);
     }
   }
+  T_wb = rigid(T_wb);
   previous_body_ = last_body_;
   last_body_ = T_wb;
   frame.T_world_camera = T_wb * T_ic;

@@ -118,6 +118,8 @@ Eigen::Vector3d SlidingWindow::landmarkWorld(const Landmark& l) const {
 SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
   if (!keyframes_.empty() && !(input.t > keyframes_.back().t))
     throw std::invalid_argument("SlidingWindow: keyframe times must increase");
+  if (!input.T_world_body.matrix().allFinite() || !input.velocity.allFinite())
+    throw std::invalid_argument("SlidingWindow: the keyframe's initial pose or velocity is not finite");
   Keyframe k;
   k.id = next_id_++;
   k.t = input.t;
@@ -187,6 +189,7 @@ SolveReport SlidingWindow::solve() {
   report.solve_ms = 1000.0 * summary.total_time_in_seconds;
   report.final_cost = summary.final_cost;
   report.usable = summary.IsSolutionUsable();
+  if (!report.usable) report.message = summary.message;
   return report;
 }
 

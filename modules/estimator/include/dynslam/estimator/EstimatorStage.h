@@ -46,6 +46,8 @@ struct EstimatorOptions : mrpt::config::CLoadableOptions {
   /// A PnP pose farther than this from the constant-velocity prediction is taken for a wrong
   /// RANSAC consensus and not used (m, deg).
   double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
+  /// Failure detection: estimates beyond these restart the window (m/s, rad/s, m/s^2).
+  double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -72,6 +74,8 @@ class EstimatorStage : public core::Stage {
   /// window is visual-inertial, else constant velocity from the last two frames.
   Eigen::Isometry3d predictBody(double t, Eigen::Vector3d* velocity) const;
   void tryImuInitialization(double t);
+  /// A pose change no larger than pnp_max_correction_m / _deg (and finite).
+  bool plausibleStep(const Eigen::Isometry3d& step) const;
 
   EstimatorOptions options_;
   std::unique_ptr<SlidingWindow> window_;

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace dynslam::estimator {
@@ -61,6 +62,7 @@ struct SolveReport {
   int landmarks = 0;     ///< landmarks with factors in the problem
   double final_cost = 0;
   bool usable = true;
+  std::string message;  ///< Ceres' reason when not usable
 };
 
 class SlidingWindow {
