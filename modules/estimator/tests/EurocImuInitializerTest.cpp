@@ -6,6 +6,8 @@
 // test says why not every window). One window every second over the IMU file's 40 s.
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/StateBlocks.h>
+#include "EurocCsv.h"
+
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>
@@ -17,25 +19,11 @@
 #include <sstream>
 
 using namespace dynslam::estimator;
+using namespace dynslam::estimator::testing;
 
 namespace {
 
 // The same reader as EurocPreintegrationTest.cpp (kept local: that file is another author's).
-std::vector<std::vector<double>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<double>> rows;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream s(line);
-    std::vector<double> row;
-    for (double v; s >> v;) row.push_back(v);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-long long nanoseconds(double v) { return static_cast<long long>(std::llround(v)); }
 
 double angleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
@@ -55,14 +43,14 @@ double median(std::vector<double> v) {
 /// are linearised at the ground truth's accelerometer bias (which the initializer does not
 /// estimate) instead of zero.
 std::vector<WindowResult> runWindows(const std::string& dir, bool removeTrueAccBias) {
-  const auto imu = readCsv(dir + "/imu.csv");         // t[ns], gyro xyz, acc xyz
-  const auto gt = readCsv(dir + "/groundtruth.csv");  // t, p, q(w,x,y,z), v, bg, ba
+  const auto imu = readEurocCsv(dir + "/imu.csv");         // t[ns], gyro xyz, acc xyz
+  const auto gt = readEurocCsv(dir + "/groundtruth.csv");  // t, p, q(w,x,y,z), v, bg, ba
   std::vector<WindowResult> results;
   if (imu.size() < 1000 || gt.size() < 100) return results;
   std::map<long long, size_t> imuAt;
-  for (size_t k = 0; k < imu.size(); ++k) imuAt[nanoseconds(imu[k][0])] = k;
+  for (size_t k = 0; k < imu.size(); ++k) imuAt[eurocNanoseconds(imu[k][0])] = k;
   std::map<long long, size_t> gtAt;
-  for (size_t k = 0; k < gt.size(); ++k) gtAt[nanoseconds(gt[k][0])] = k;
+  for (size_t k = 0; k < gt.size(); ++k) gtAt[eurocNanoseconds(gt[k][0])] = k;
 
   // The 'visual' world: the ground truth's frame turned and moved by an arbitrary known pose.
   Eigen::Isometry3d T_visual_gt = Eigen::Isometry3d::Identity();
@@ -104,8 +92,8 @@ std::vector<WindowResult> runWindows(const std::string& dir, bool removeTrueAccB
           Eigen::Vector3d(s0[4], s0[5], s0[6]), Eigen::Vector3d(s0[1], s0[2], s0[3]),
           removeTrueAccBias ? Eigen::Vector3d(row[14], row[15], row[16]) : Eigen::Vector3d::Zero(),
           Eigen::Vector3d::Zero(), adis16448);
-      for (size_t j = s->second + 1; j < imu.size() && nanoseconds(imu[j][0]) <= t + spacing; ++j)
-        p->push(1e-9 * double(nanoseconds(imu[j][0]) - nanoseconds(imu[j - 1][0])),
+      for (size_t j = s->second + 1; j < imu.size() && eurocNanoseconds(imu[j][0]) <= t + spacing; ++j)
+        p->push(1e-9 * double(eurocNanoseconds(imu[j][0]) - eurocNanoseconds(imu[j - 1][0])),
                 Eigen::Vector3d(imu[j][4], imu[j][5], imu[j][6]),
                 Eigen::Vector3d(imu[j][1], imu[j][2], imu[j][3]));
       pointers.push_back(p.get());

@@ -3,6 +3,8 @@
 // samples with the ground-truth biases must predict the relative pose within 1 cm and 0.1 deg
 // (median over the file).
 #include <dynslam/estimator/imu/ImuPreintegration.h>
+#include "EurocCsv.h"
+
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>
@@ -13,24 +15,10 @@
 #include <sstream>
 
 using namespace dynslam::estimator;
+using namespace dynslam::estimator::testing;
 
 namespace {
 
-std::vector<std::vector<double>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<double>> rows;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream s(line);
-    std::vector<double> row;
-    for (double v; s >> v;) row.push_back(v);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-long long nanoseconds(double v) { return static_cast<long long>(std::llround(v)); }
 
 double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -42,14 +30,14 @@ double median(std::vector<double> v) {
 TEST(EurocPreintegration, PredictsHalfSecondRelativePosesWithinOneCentimetreAndATenthDegree) {
   const std::string dir = dynslam::testing::sharedPath("data/euroc_v102_imu");
   if (dir.empty()) GTEST_SKIP() << "../shared/data/euroc_v102_imu is absent";
-  const auto imu = readCsv(dir + "/imu.csv");  // t[ns], gyro xyz, acc xyz
-  const auto gt = readCsv(dir + "/groundtruth.csv");  // t, p, q(w,x,y,z), v, bg, ba
+  const auto imu = readEurocCsv(dir + "/imu.csv");  // t[ns], gyro xyz, acc xyz
+  const auto gt = readEurocCsv(dir + "/groundtruth.csv");  // t, p, q(w,x,y,z), v, bg, ba
   ASSERT_GT(imu.size(), 1000u);
   ASSERT_GT(gt.size(), 100u);
   std::map<long long, size_t> imuAt;
-  for (size_t k = 0; k < imu.size(); ++k) imuAt[nanoseconds(imu[k][0])] = k;
+  for (size_t k = 0; k < imu.size(); ++k) imuAt[eurocNanoseconds(imu[k][0])] = k;
   std::map<long long, size_t> gtAt;
-  for (size_t k = 0; k < gt.size(); ++k) gtAt[nanoseconds(gt[k][0])] = k;
+  for (size_t k = 0; k < gt.size(); ++k) gtAt[eurocNanoseconds(gt[k][0])] = k;
 
   const Eigen::Vector3d gravity(0, 0, -9.81);
   const long long window = 500'000'000;  // 0.5 s
@@ -67,8 +55,8 @@ TEST(EurocPreintegration, PredictsHalfSecondRelativePosesWithinOneCentimetreAndA
     ImuPreintegration pre(Eigen::Vector3d(s0[4], s0[5], s0[6]), Eigen::Vector3d(s0[1], s0[2], s0[3]),
                           ba, bg, ImuNoise{});
     size_t k = first->second + 1;
-    for (; k < imu.size() && nanoseconds(imu[k][0]) <= ti + window; ++k)
-      pre.push(1e-9 * double(nanoseconds(imu[k][0]) - nanoseconds(imu[k - 1][0])),
+    for (; k < imu.size() && eurocNanoseconds(imu[k][0]) <= ti + window; ++k)
+      pre.push(1e-9 * double(eurocNanoseconds(imu[k][0]) - eurocNanoseconds(imu[k - 1][0])),
                Eigen::Vector3d(imu[k][4], imu[k][5], imu[k][6]),
                Eigen::Vector3d(imu[k][1], imu[k][2], imu[k][3]));
     if (std::abs(pre.sumDt() - 0.5) > 1e-6) continue;  // an IMU gap: not comparable
