@@ -6,7 +6,8 @@
 //       [--miss-rate 0.1] [--jitter 3] [--min-visible 0.2] [--seed 1]
 //       [--depth segmentation|truth|box] [--report-coasting 1]
 //       [--sweep Tracking.rho_min=0.3,0.5,0.6,0.7,0.8]  ('' for none)
-//       [--set Section.key=value]...   (Tracking.* goes to the tracker, the rest to the scenario)
+//       [--set Section.key=value]...   (Tracking.* goes to the tracker, Segmentation.* to the
+//                                       segmentation, the rest to the scenario)
 //       [--video vtest.avi --model yolox_nano.onnx --strip strip.png [--video-frames N]]
 //
 // The simulated run: the scenario rendered in-process twice (the first pass writes the
@@ -212,7 +213,10 @@ int main(int argc, char** argv) {
     s.report_coasting = int(cl.optionalInteger("--report-coasting").value_or(s.report_coasting));
     s.sweep = cl.valueOr("--sweep", s.sweep);
     for (const auto& o : cl.all("--set"))
-      (o.rfind("Tracking.", 0) == 0 ? s.tracker_overrides : s.sim_overrides).push_back(o);
+      (o.rfind("Tracking.", 0) == 0         ? s.tracker_overrides
+       : o.rfind("Segmentation.", 0) == 0 ? s.segmentation_overrides
+                                          : s.sim_overrides)
+          .push_back(o);
     if (cl.has("--video")) {
       VideoBenchSettings v;
       v.video = cl.required("--video");

@@ -4,6 +4,7 @@
 #include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/detection/GroundTruthDetector.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
+#include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/sim/Simulator.h>
 #include <dynslam/tracking/DepthIoU.h>
@@ -58,7 +59,12 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
   gt.min_visible_fraction = s.min_visible;
   gt.seed = s.seed;
   detection::GroundTruthDetector detector(gt, detection::ClassMap());
-  const segmentation::DepthThresholdSegmenter segmenter;
+  // The segmentation exactly as the pipeline's Segmentation stage reads it from --set.
+  auto segIni = core::IniConfig::fromText("", "bench-tracking --set");
+  for (const auto& o : s.segmentation_overrides) segIni.applyOverride(o);
+  segmentation::SegmentationStage segStage;
+  segStage.configure(segIni, "Segmentation");
+  const segmentation::DepthThresholdSegmenter segmenter(segStage.options().params);
 
   CachedRun run;
   run.image = cv::Size(options.world.width, options.world.height);

@@ -24,6 +24,7 @@ struct BenchSettings {
   int report_coasting = 1;
   std::string sweep = "Tracking.rho_min=0.3,0.5,0.6,0.7,0.8";  // "": none
   std::vector<std::string> sim_overrides, tracker_overrides;
+  std::vector<std::string> segmentation_overrides;  // "Segmentation.key=value" (--set)
 };
 
 /// What the tracker sees and what it is scored against, per frame.

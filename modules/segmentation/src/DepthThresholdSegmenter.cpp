@@ -49,6 +49,29 @@ cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size) {
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
+namespace {
+
+cv::Rect2d candidateBox(const cv::Rect& roi) {
+  const cv::Rect2d box(roi);
+  return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
+}
+
+}  // namespace
+
+bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::Rect& roi,
+                                                TwoMeansResult& out) const {
+  if (roi.empty()) return false;
+  // Steps 1-3: the candidate box M (same centre, half the size), m grid samples, 2-means.
+  std::vector<float> samples;
+  samples.reserve(params_.m);
+  const int gridPoints = sampleGrid(depth, candidateBox(roi), params_.m, samples);
+  const int needed =
+      std::max(1, static_cast<int>(std::ceil(params_.min_valid_fraction * gridPoints)));
+  if (static_cast<int>(samples.size()) < needed) return false;
+  out = twoMeans(samples);
+  return true;
+}
+
 core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
                                                      const core::Detection& detection,
                                                      int detectionIndex) const {
@@ -57,22 +80,27 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
   core::ObjectMask out;
   out.detection = detectionIndex;
   out.roi = pixelRoi(detection.box, depth.size());
-  if (out.roi.empty()) return out;
-  const cv::Rect2d box(out.roi);
+  TwoMeansResult clusters;
+  if (!candidateClusters(depth, out.roi, clusters)) return out;
+  bool nearIsObject = false;
+  if (params_.object_cluster == ObjectCluster::Larger)
+    nearIsObject = clusters.near_count > clusters.far_count;
+  else if (params_.object_cluster == ObjectCluster::OccluderAware)  // no other box: no occluder
+    nearIsObject = clusters.two_clusters &&
+                   clusters.far_mean - clusters.near_mean > marginFor(detection);
+  return segmentWith(depth, detection, detectionIndex, clusters, nearIsObject);
+}
 
-  // Steps 1-3: the candidate box M (same centre, half the size), m grid samples, 2-means.
-  const cv::Rect2d candidate(box.x + box.width / 4, box.y + box.height / 4, box.width / 2,
-                             box.height / 2);
-  std::vector<float> samples;
-  samples.reserve(params_.m);
-  const int gridPoints = sampleGrid(depth, candidate, params_.m, samples);
-  const int needed =
-      std::max(1, static_cast<int>(std::ceil(params_.min_valid_fraction * gridPoints)));
-  if (static_cast<int>(samples.size()) < needed) return out;
-  const TwoMeansResult clusters = twoMeans(samples);
+core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
+                                                      const core::Detection& detection,
+                                                      int detectionIndex,
+                                                      const TwoMeansResult& clusters,
+                                                      bool nearIsObject) const {
+  core::ObjectMask out;
+  out.detection = detectionIndex;
+  out.roi = pixelRoi(detection.box, depth.size());
+  const cv::Rect2d box(out.roi);
   const double e = marginFor(detection);
-  const bool nearIsObject =
-      params_.object_cluster == ObjectCluster::Larger && clusters.near_count > clusters.far_count;
   out.d_t = nearIsObject ? clusters.near_mean : clusters.far_mean;
 
   // Step 4: a near cluster more than e in front is an occluder; otherwise there is none
@@ -99,10 +127,49 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
 
 std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     const cv::Mat& depth, const std::vector<core::Detection>& detections) const {
+  if (depth.type() != CV_32FC1 && !detections.empty())
+    throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
   std::vector<core::ObjectMask> masks;
   masks.reserve(detections.size());
-  for (size_t i = 0; i < detections.size(); ++i)
-    masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
+  if (params_.object_cluster != ObjectCluster::OccluderAware) {
+    for (size_t i = 0; i < detections.size(); ++i)
+      masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
+    resolveMutualOcclusion(masks);
+    return masks;
+  }
+  const size_t n = detections.size();
+  std::vector<cv::Rect> rois(n);
+  std::vector<TwoMeansResult> clusters(n);
+  std::vector<char> ok(n);
+  for (size_t i = 0; i < n; ++i) {
+    rois[i] = pixelRoi(detections[i].box, depth.size());
+    ok[i] = candidateClusters(depth, rois[i], clusters[i]);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (!ok[i]) {
+      core::ObjectMask empty;
+      empty.detection = int(i);
+      empty.roi = rois[i];
+      masks.push_back(empty);
+      continue;
+    }
+    const TwoMeansResult& c = clusters[i];
+    const double e = marginFor(detections[i]);
+    bool nearIsObject = c.two_clusters && c.far_mean - c.near_mean > e;
+    if (nearIsObject) {
+      // Is the near surface another detection standing in front?
+      const cv::Rect2d candidate = candidateBox(rois[i]);
+      for (size_t j = 0; j < n && nearIsObject; ++j) {
+        if (j == i || !ok[j] || (cv::Rect2d(rois[j]) & candidate).empty()) continue;
+        if (rois[j].y + rois[j].height <= rois[i].y + rois[i].height) continue;
+        const double ej = marginFor(detections[j]);
+        const double nearest = clusters[j].two_clusters ? clusters[j].near_mean : clusters[j].far_mean;
+        if (std::abs(nearest - c.near_mean) < ej || std::abs(clusters[j].far_mean - c.near_mean) < ej)
+          nearIsObject = false;
+      }
+    }
+    masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject));
+  }
   resolveMutualOcclusion(masks);
   return masks;
 }

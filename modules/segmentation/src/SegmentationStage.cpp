@@ -5,6 +5,18 @@
 #include <stdexcept>
 
 namespace dynslam::segmentation {
+namespace {
+
+const char* clusterName(ObjectCluster c) {
+  switch (c) {
+    case ObjectCluster::Far: return "far";
+    case ObjectCluster::Larger: return "larger";
+    case ObjectCluster::OccluderAware: return "occluder_aware";
+  }
+  return "far";
+}
+
+}  // namespace
 
 void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                              const std::string& s) {
@@ -16,15 +28,16 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.e_other_nonrigid = c.read_double(s, "e_other_nonrigid", p.e_other_nonrigid);
   p.e_other_rigid = c.read_double(s, "e_other_rigid", p.e_other_rigid);
   p.min_valid_fraction = c.read_double(s, "min_valid_fraction", p.min_valid_fraction);
-  const std::string cluster =
-      c.read_string(s, "object_cluster", p.object_cluster == ObjectCluster::Far ? "far" : "larger");
+  const std::string cluster = c.read_string(s, "object_cluster", clusterName(p.object_cluster));
   if (cluster == "far")
     p.object_cluster = ObjectCluster::Far;
   else if (cluster == "larger")
     p.object_cluster = ObjectCluster::Larger;
+  else if (cluster == "occluder_aware")
+    p.object_cluster = ObjectCluster::OccluderAware;
   else
     throw std::invalid_argument("object_cluster = '" + cluster +
-                                "': expected far (the method) or larger");
+                                "': expected far (the method), larger or occluder_aware");
   const std::string which = c.read_string(
       s, "boxes", boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks");
   if (which == "detections")
@@ -51,9 +64,10 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   write("e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
   write("min_valid_fraction", p.min_valid_fraction,
         "of the m samples with depth, else the mask is not valid (empty)");
-  write("object_cluster", std::string(p.object_cluster == ObjectCluster::Far ? "far" : "larger"),
+  write("object_cluster", std::string(clusterName(p.object_cluster)),
         "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
-        "samples (a variant, not the method)");
+        "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
+        "variants, not the method)");
   write("boxes",
         std::string(boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks"),
         "detections: the detector's boxes; predicted_tracks: confirmed tracks' predicted boxes on "

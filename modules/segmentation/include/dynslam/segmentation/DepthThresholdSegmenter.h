@@ -6,6 +6,7 @@
 // [T_min, T_max]. Overlapping boxes are segmented each with their own thresholds; a pixel
 // both claim goes to the nearer object (mutual occlusion). MRPT-free; the stage wraps it.
 #include <dynslam/core/Perception.h>
+#include <dynslam/segmentation/TwoMeans.h>
 
 #include <opencv2/core/mat.hpp>
 
@@ -15,9 +16,15 @@ namespace dynslam::segmentation {
 
 /// Which 2-means cluster of the candidate box's depths is the object (step 3).
 enum class ObjectCluster {
-  Far,    ///< method.md: the far cluster (the near one is an occluder)
-  Larger  ///< the cluster with more samples (the far one on a tie); NOT the method: a variant
-          ///< that bench-segmentation compares, for boxes whose centre shows background
+  Far,     ///< method.md: the far cluster (the near one is an occluder)
+  Larger,  ///< the cluster with more samples (the far one on a tie); NOT the method: a variant
+           ///< that bench-segmentation compares, for boxes whose centre shows background
+  /// NOT the method: when the two clusters are more than e apart, the near one is an occluder
+  /// only if another detection claims it (its box overlaps the candidate box, its bottom edge
+  /// is lower in the image, i.e. it stands nearer on the floor, and one of its own clusters is
+  /// within e of the near depth); otherwise the near cluster is the object and the far one is
+  /// background seen through gaps (between a walker's legs, beside the arms).
+  OccluderAware
 };
 
 /// The method's parameters (defaults: method.md section 1). Read from the ini by
@@ -52,11 +59,19 @@ class DepthThresholdSegmenter {
   core::ObjectMask segmentOne(const cv::Mat& depth, const core::Detection& detection,
                               int detectionIndex) const;
 
-  /// One ObjectMask per detection, same order, mutual occlusion resolved.
+  /// One ObjectMask per detection, same order, mutual occlusion resolved (and, with
+  /// OccluderAware, the object cluster chosen with the other detections in view).
   std::vector<core::ObjectMask> segment(const cv::Mat& depth,
                                         const std::vector<core::Detection>& detections) const;
 
  private:
+  /// Steps 1-3 for one box: the 2-means of its candidate box, or nothing without enough depth.
+  bool candidateClusters(const cv::Mat& depth, const cv::Rect& roi, TwoMeansResult& out) const;
+  /// Steps 4-8 with the object's cluster given.
+  core::ObjectMask segmentWith(const cv::Mat& depth, const core::Detection& detection,
+                               int detectionIndex, const TwoMeansResult& clusters,
+                               bool objectIsNear) const;
+
   DepthThresholdParams params_;
 };
 
