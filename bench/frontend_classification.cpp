@@ -131,6 +131,7 @@ void run(const Settings& s) {
   std::map<std::int64_t, int> trackLength;
   std::vector<double> cameraRotErr, cameraTransErr;
   size_t frames = 0, features = 0, staticFeatures = 0, withDepth = 0;
+  size_t objectFeatures = 0, staticObjectFeatures = 0;
   std::vector<core::Frame> ready;
   bool more = true;
   while (more) {
@@ -187,6 +188,10 @@ void run(const Settings& s) {
       for (const auto& f : frame.features) {
         ++features;
         staticFeatures += f.feature_class == core::FeatureClass::Static;
+        if (f.object_id >= 0) {
+          ++objectFeatures;
+          staticObjectFeatures += f.feature_class == core::FeatureClass::Static;
+        }
         withDepth += f.depth > 0;
         trackLength[f.id] = std::max(trackLength[f.id], f.track_length);
       }
@@ -246,6 +251,10 @@ void run(const Settings& s) {
   } else {
     printRatio("features classified static", features ? double(staticFeatures) / features : 0,
                0.98, true, "");
+    std::printf("%-44s %zu of %zu features on detected objects (%.1f %%), %.4f of them static\n",
+                "  of which on objects:", objectFeatures, features,
+                features ? 100.0 * objectFeatures / features : 0,
+                objectFeatures ? double(staticObjectFeatures) / objectFeatures : 0);
   }
   for (const auto& slot : stages) {
     const double m = median(slot.ms);
