@@ -179,7 +179,7 @@ SolveReport SlidingWindow::solve() {
 
   ceres::Solver::Options solver;
   solver.linear_solver_type = ceres::DENSE_SCHUR;
-  solver.trust_region_strategy_type = ceres::DOGLEG;
+  solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   solver.max_num_iterations = params_.max_iterations;
   solver.max_solver_time_in_seconds = params_.max_solver_time_s;
   solver.num_threads = 2;
