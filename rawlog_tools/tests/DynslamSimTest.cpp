@@ -176,8 +176,9 @@ TEST_P(DynslamSimScenario, RawlogEditCountsOneSecond) {
   EXPECT_EQ(info.exitCode, 0) << info.output;
   EXPECT_TRUE(std::regex_search(info.output, std::regex(R"(RGBD\s*/\s*31\s*/)"))) << info.output;
   EXPECT_TRUE(std::regex_search(info.output, std::regex(R"(IMU\s*/\s*201\s*/)"))) << info.output;
-  if (p.gnss > 0)
+  if (p.gnss > 0) {
     EXPECT_TRUE(std::regex_search(info.output, std::regex(R"(GPS\s*/\s*11\s*/)"))) << info.output;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

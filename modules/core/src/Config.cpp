@@ -100,4 +100,36 @@ void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>&
                         " (no configured stage reads it); known sections: " + joined(known));
 }
 
+namespace {
+
+template <typename T>
+void writePadded(mrpt::config::CConfigFileBase& c, const std::string& section,
+                 const std::string& key, const T& value, const std::string& comment) {
+  c.write(section, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
+          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
+}
+
+}  // namespace
+
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              double value, const std::string& comment) {
+  writePadded(c, section, key, value, comment);
+}
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              int value, const std::string& comment) {
+  writePadded(c, section, key, value, comment);
+}
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              bool value, const std::string& comment) {
+  writePadded(c, section, key, value, comment);
+}
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              const std::string& value, const std::string& comment) {
+  writePadded(c, section, key, value, comment);
+}
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              const char* value, const std::string& comment) {
+  writePadded(c, section, key, std::string(value), comment);
+}
+
 }  // namespace dynslam::core

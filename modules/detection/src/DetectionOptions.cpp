@@ -1,5 +1,7 @@
 #include "dynslam/detection/DetectionOptions.h"
 
+#include <dynslam/core/Config.h>
+
 #include <mrpt/config/CConfigFileBase.h>
 
 namespace dynslam::detection {
@@ -15,14 +17,6 @@ std::string layoutName(YoloLayout layout) {
       return "yolov8";
   }
   return "";
-}
-
-/// One documented key, padded like MRPT_SAVE_CONFIG_VAR_COMMENT pads.
-template <typename T>
-void put(mrpt::config::CConfigFileBase& c, const std::string& s, const char* key, const T& value,
-         const std::string& comment) {
-  c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
-          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
 }
 
 }  // namespace
@@ -73,31 +67,31 @@ void DetectionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                "classes are dropped");
   if (detector == "onnx_yolo") {
     const auto& o = onnx_yolo;
-    put(c, s, "model", o.model, "ONNX file (relative: working directory)");
-    put(c, s, "layout", layoutName(o.layout),
+    core::writeKey(c, s, "model", o.model, "ONNX file (relative: working directory)");
+    core::writeKey(c, s, "layout", layoutName(o.layout),
         "output layout: yolox (BGR 0-255) | yolov5 | yolov8 (RGB 0-1)");
-    put(c, s, "input_size", o.input_size, "square network input, px (multiple of 32)");
-    put(c, s, "confidence", o.confidence, "minimum score (objectness x class)");
-    put(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold within a category");
-    put(c, s, "threads", o.threads, "cv::setNumThreads (process-wide); 0: default");
+    core::writeKey(c, s, "input_size", o.input_size, "square network input, px (multiple of 32)");
+    core::writeKey(c, s, "confidence", o.confidence, "minimum score (objectness x class)");
+    core::writeKey(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold within a category");
+    core::writeKey(c, s, "threads", o.threads, "cv::setNumThreads (process-wide); 0: default");
   } else if (detector == "hog") {
     const auto& o = hog;
-    put(c, s, "scale", o.scale, "pyramid step (> 1)");
-    put(c, s, "hit_threshold", o.hit_threshold, "minimum SVM margin");
-    put(c, s, "win_stride", o.win_stride, "px between windows (multiple of 8)");
-    put(c, s, "min_height", o.min_height,
+    core::writeKey(c, s, "scale", o.scale, "pyramid step (> 1)");
+    core::writeKey(c, s, "hit_threshold", o.hit_threshold, "minimum SVM margin");
+    core::writeKey(c, s, "win_stride", o.win_stride, "px between windows (multiple of 8)");
+    core::writeKey(c, s, "min_height", o.min_height,
         "smallest person, px (image resized by 128 / min_height)");
-    put(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold");
+    core::writeKey(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold");
   } else if (detector == "ground_truth") {
     const auto& o = ground_truth;
-    put(c, s, "objects", o.objects, "dynslam-sim objects.txt (relative: working dir)");
-    put(c, s, "miss_rate", o.miss_rate, "probability a visible object is missed");
-    put(c, s, "jitter_px", o.jitter_px, "Gaussian sigma per box edge, px");
-    put(c, s, "false_positive_rate", o.false_positive_rate,
+    core::writeKey(c, s, "objects", o.objects, "dynslam-sim objects.txt (relative: working dir)");
+    core::writeKey(c, s, "miss_rate", o.miss_rate, "probability a visible object is missed");
+    core::writeKey(c, s, "jitter_px", o.jitter_px, "Gaussian sigma per box edge, px");
+    core::writeKey(c, s, "false_positive_rate", o.false_positive_rate,
         "mean random boxes per frame (Poisson)");
-    put(c, s, "min_visible_fraction", o.min_visible_fraction,
+    core::writeKey(c, s, "min_visible_fraction", o.min_visible_fraction,
         "less visible objects are not reported");
-    put(c, s, "seed", static_cast<int>(o.seed), "noise seed (same seed: same boxes)");
+    core::writeKey(c, s, "seed", static_cast<int>(o.seed), "noise seed (same seed: same boxes)");
   }
 }
 

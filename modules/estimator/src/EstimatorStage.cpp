@@ -76,49 +76,45 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 
 void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                         const std::string& s) const {
-  const auto write = [&](const char* key, auto value, const char* comment) {
-    c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
-            mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
-  };
   const auto& w = window;
-  write("window_size", w.window_size, "keyframes in the sliding window");
-  write("max_iterations", w.max_iterations, "Ceres iterations per keyframe solve");
-  write("max_solver_time", w.max_solver_time_s, "s; Ceres wall-time limit per keyframe solve");
-  write("pixel_sigma", w.pixel_sigma, "px; feature position noise");
-  write("huber_sigmas", w.huber_sigmas, "Huber threshold on whitened residuals");
-  write("depth_sigma_a", w.depth_noise.a, "m; depth noise sigma_d = a + b d^2");
-  write("depth_sigma_b", w.depth_noise.b, "1/m; depth noise sigma_d = a + b d^2");
-  write("transferred_depth", w.transferred_depth,
+  core::writeKey(c, s, "window_size", w.window_size, "keyframes in the sliding window");
+  core::writeKey(c, s, "max_iterations", w.max_iterations, "Ceres iterations per keyframe solve");
+  core::writeKey(c, s, "max_solver_time", w.max_solver_time_s, "s; Ceres wall-time limit per keyframe solve");
+  core::writeKey(c, s, "pixel_sigma", w.pixel_sigma, "px; feature position noise");
+  core::writeKey(c, s, "huber_sigmas", w.huber_sigmas, "Huber threshold on whitened residuals");
+  core::writeKey(c, s, "depth_sigma_a", w.depth_noise.a, "m; depth noise sigma_d = a + b d^2");
+  core::writeKey(c, s, "depth_sigma_b", w.depth_noise.b, "1/m; depth noise sigma_d = a + b d^2");
+  core::writeKey(c, s, "transferred_depth", w.transferred_depth,
         "depth measured in later keyframes constrains them too");
-  write("motion_prior_sigma_translation", w.motion_prior_sigma_translation,
+  core::writeKey(c, s, "motion_prior_sigma_translation", w.motion_prior_sigma_translation,
         "m per keyframe interval; RGB-D-only constant-motion prior");
-  write("motion_prior_sigma_rotation", w.motion_prior_sigma_rotation,
+  core::writeKey(c, s, "motion_prior_sigma_rotation", w.motion_prior_sigma_rotation,
         "rad per keyframe interval; RGB-D-only constant-motion prior");
-  write("keyframe_parallax_px", keyframes.min_parallax_px,
+  core::writeKey(c, s, "keyframe_parallax_px", keyframes.min_parallax_px,
         "px; mean feature motion since the last keyframe that makes a keyframe");
-  write("keyframe_max_interval", keyframes.max_interval_s, "s; a keyframe at least this often");
-  write("keyframe_min_shared", keyframes.min_shared,
+  core::writeKey(c, s, "keyframe_max_interval", keyframes.max_interval_s, "s; a keyframe at least this often");
+  core::writeKey(c, s, "keyframe_min_shared", keyframes.min_shared,
         "fewer features shared with the last keyframe make a keyframe");
-  write("min_pnp_inliers", min_pnp_inliers, "PnP inliers needed to track a frame");
-  write("pnp_threshold_px", pnp_threshold_px, "px; PnP RANSAC reprojection threshold");
-  write("pnp_max_correction_m", pnp_max_correction_m,
+  core::writeKey(c, s, "min_pnp_inliers", min_pnp_inliers, "PnP inliers needed to track a frame");
+  core::writeKey(c, s, "pnp_threshold_px", pnp_threshold_px, "px; PnP RANSAC reprojection threshold");
+  core::writeKey(c, s, "pnp_max_correction_m", pnp_max_correction_m,
         "m; a PnP pose farther than this from the motion prediction is rejected");
-  write("pnp_max_correction_deg", pnp_max_correction_deg,
+  core::writeKey(c, s, "pnp_max_correction_deg", pnp_max_correction_deg,
         "deg; a PnP pose turned more than this from the motion prediction is rejected");
-  write("use_imu", use_imu, "use the IMU when the frames carry gyro + accelerometer samples");
-  write("acc_noise", window.imu_noise.acc_noise, "m/s^2/sqrt(Hz); accelerometer white noise");
-  write("gyro_noise", window.imu_noise.gyro_noise, "rad/s/sqrt(Hz); gyroscope white noise");
-  write("acc_random_walk", window.imu_noise.acc_random_walk,
+  core::writeKey(c, s, "use_imu", use_imu, "use the IMU when the frames carry gyro + accelerometer samples");
+  core::writeKey(c, s, "acc_noise", window.imu_noise.acc_noise, "m/s^2/sqrt(Hz); accelerometer white noise");
+  core::writeKey(c, s, "gyro_noise", window.imu_noise.gyro_noise, "rad/s/sqrt(Hz); gyroscope white noise");
+  core::writeKey(c, s, "acc_random_walk", window.imu_noise.acc_random_walk,
         "m/s^3/sqrt(Hz); accelerometer bias random walk");
-  write("gyro_random_walk", window.imu_noise.gyro_random_walk,
+  core::writeKey(c, s, "gyro_random_walk", window.imu_noise.gyro_random_walk,
         "rad/s^2/sqrt(Hz); gyroscope bias random walk");
-  write("gravity", imu_init.gravity_magnitude, "m/s^2; local gravity");
-  write("init_min_acceleration_rms", imu_init.min_acceleration_rms,
+  core::writeKey(c, s, "gravity", imu_init.gravity_magnitude, "m/s^2; local gravity");
+  core::writeKey(c, s, "init_min_acceleration_rms", imu_init.min_acceleration_rms,
         "m/s^2; IMU initialization waits for this much motion (0: still starts accepted)");
-  write("max_speed", max_speed, "m/s; a faster estimate is a failure (window restarted)");
-  write("max_gyro_bias", max_gyro_bias, "rad/s; a larger gyro bias estimate is a failure");
-  write("max_acc_bias", max_acc_bias, "m/s^2; a larger accelerometer bias estimate is a failure");
-  write("dynamic_handling", std::string(handlingName(dynamic_handling)),
+  core::writeKey(c, s, "max_speed", max_speed, "m/s; a faster estimate is a failure (window restarted)");
+  core::writeKey(c, s, "max_gyro_bias", max_gyro_bias, "rad/s; a larger gyro bias estimate is a failure");
+  core::writeKey(c, s, "max_acc_bias", max_acc_bias, "m/s^2; a larger accelerometer bias estimate is a failure");
+  core::writeKey(c, s, "dynamic_handling", std::string(handlingName(dynamic_handling)),
         "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS)");
 }
 

@@ -9,13 +9,6 @@ const char* statisticName(SpeedStatistic s) {
   return s == SpeedStatistic::MedianFlow ? "median_flow" : "mean_norm";
 }
 
-template <class T>
-void write(mrpt::config::CConfigFileBase& c, const std::string& s, const std::string& key,
-           const T& value, const std::string& comment) {
-  c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
-          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
-}
-
 }  // namespace
 
 void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
@@ -52,38 +45,38 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
 void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                                     const std::string& s) const {
   const auto& p = classifier;
-  write(c, s, "speed_threshold", p.speed_threshold,
+  core::writeKey(c, s, "speed_threshold", p.speed_threshold,
         "m/s; an object moving faster (scene flow / time) is dynamic (method.md: 0.1)");
-  write(c, s, "speed_window", p.speed_window,
+  core::writeKey(c, s, "speed_window", p.speed_window,
         "frames the scene flow spans at most (1: frame to frame, the method; see the header)");
-  write(c, s, "speed_statistic", std::string(statisticName(p.speed_statistic)),
+  core::writeKey(c, s, "speed_statistic", std::string(statisticName(p.speed_statistic)),
         "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
-  write(c, s, "speed_noise_sigmas", p.speed_noise_sigmas,
+  core::writeKey(c, s, "speed_noise_sigmas", p.speed_noise_sigmas,
         "dynamic when speed > speed_threshold + this * the speed's noise (0: the method)");
-  write(c, s, "min_flow_features", p.min_flow_features,
+  core::writeKey(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
-  write(c, s, "depth_window", p.depth_window,
+  core::writeKey(c, s, "depth_window", p.depth_window,
         "px; a feature's 3-D point uses the robust median depth of this window (1: its pixel)");
-  write(c, s, "rigid_iterations", p.rigid.ransac.iterations,
+  core::writeKey(c, s, "rigid_iterations", p.rigid.ransac.iterations,
         "RANSAC hypotheses of the rigid point sets (method.md: 100)");
-  write(c, s, "rigid_sample_size", p.rigid.ransac.sample_size,
+  core::writeKey(c, s, "rigid_sample_size", p.rigid.ransac.sample_size,
         "point pairs per hypothesis (method.md: 4)");
-  write(c, s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold,
+  core::writeKey(c, s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold,
         "m; |R p + t - q| below this joins the rigid set (method.md tau: 0.03)");
-  write(c, s, "rigid_min_members", p.rigid.min_members,
+  core::writeKey(c, s, "rigid_min_members", p.rigid.min_members,
         "fewer inliers than this: no rigid set on the object this frame");
-  write(c, s, "rigid_noise_gates", p.rigid.noise_gates,
+  core::writeKey(c, s, "rigid_noise_gates", p.rigid.noise_gates,
         "true: a pair noisier than tau gets 3 sigma of its depth noise as gate; false: tau");
-  write(c, s, "camera_iterations", p.camera.ransac.iterations,
+  core::writeKey(c, s, "camera_iterations", p.camera.ransac.iterations,
         "RANSAC hypotheses of the camera motion from background points");
-  write(c, s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold,
+  core::writeKey(c, s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold,
         "m; inlier threshold of the camera-motion registration");
-  write(c, s, "camera_min_inliers", p.camera.min_inliers,
+  core::writeKey(c, s, "camera_min_inliers", p.camera.min_inliers,
         "fewer background inliers: IMU rotation / constant velocity instead");
-  write(c, s, "depth_sigma_z2", p.camera.depth_sigma_z2,
+  core::writeKey(c, s, "depth_sigma_z2", p.camera.depth_sigma_z2,
         "1/m; depth noise sigma = this * z^2: gates/weights the camera translation's pairs and "
         "weighs the rigid sets' precise registration (0: unweighted)");
-  write(c, s, "seed", int(p.seed), "seed of the RANSAC draws (runs are repeatable)");
+  core::writeKey(c, s, "seed", int(p.seed), "seed of the RANSAC draws (runs are repeatable)");
 }
 
 void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std::string& section) {

@@ -9,9 +9,7 @@ namespace dynslam::frontend {
 namespace {
 
 #define FT_READ(type, field, key) field = c.read_##type(s, key, field)
-#define FT_WRITE(field, key, comment)                            \
-  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(), \
-          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment)
+#define FT_WRITE(field, key, comment) core::writeKey(c, s, key, field, comment)
 
 }  // namespace
 
@@ -66,8 +64,7 @@ void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   FT_WRITE(t.klt_epsilon, "klt_epsilon", "px; KLT stops when an update moves less");
   FT_WRITE(t.max_fb_error_px, "max_fb_error_px",
            "px; forward-backward check: tracked back, a point must land this close");
-  c.write(s, "flow_init", toString(t.flow_init), mrpt::config::MRPT_SAVE_NAME_PADDING(),
-          mrpt::config::MRPT_SAVE_VALUE_PADDING(),
+  core::writeKey(c, s, "flow_init", toString(t.flow_init),
           "KLT start: gyro (rotation K R K^-1; previous_motion without gyro samples), "
           "previous_motion (constant velocity per point) or none");
   FT_WRITE(t.fundamental_ransac, "fundamental_ransac",

@@ -51,24 +51,20 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
 
 void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                            const std::string& s) const {
-  const auto write = [&](const char* key, auto value, const char* comment) {
-    c.write(s, key, value, mrpt::config::MRPT_SAVE_NAME_PADDING(),
-            mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment);
-  };
   const auto& p = params;
-  write("m", p.m, "depth samples on an even grid over the candidate box (central half of the box)");
-  write("n", p.n, "depth samples on an even grid over the upper half of the box (background)");
-  write("e_person", p.e_person, "m; depth margin e of people (method: 0.5)");
-  write("e_car", p.e_car, "m; depth margin e of cars (method: 3.0)");
-  write("e_other_nonrigid", p.e_other_nonrigid, "m; e of other classes mapped to non-rigid");
-  write("e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
-  write("min_valid_fraction", p.min_valid_fraction,
+  core::writeKey(c, s, "m", p.m, "depth samples on an even grid over the candidate box (central half of the box)");
+  core::writeKey(c, s, "n", p.n, "depth samples on an even grid over the upper half of the box (background)");
+  core::writeKey(c, s, "e_person", p.e_person, "m; depth margin e of people (method: 0.5)");
+  core::writeKey(c, s, "e_car", p.e_car, "m; depth margin e of cars (method: 3.0)");
+  core::writeKey(c, s, "e_other_nonrigid", p.e_other_nonrigid, "m; e of other classes mapped to non-rigid");
+  core::writeKey(c, s, "e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
+  core::writeKey(c, s, "min_valid_fraction", p.min_valid_fraction,
         "of the m samples with depth, else the mask is not valid (empty)");
-  write("object_cluster", std::string(clusterName(p.object_cluster)),
+  core::writeKey(c, s, "object_cluster", std::string(clusterName(p.object_cluster)),
         "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
         "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
         "variants, not the method)");
-  write("boxes",
+  core::writeKey(c, s, "boxes",
         std::string(boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks"),
         "detections: the detector's boxes; predicted_tracks: confirmed tracks' predicted boxes on "
         "frames without fresh detections (real time; list the stage again after Tracking)");

@@ -2,6 +2,8 @@
 
 #include "dynslam/sim/ScenarioPaths.h"
 
+#include <dynslam/core/Config.h>
+
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <utility>
@@ -9,9 +11,7 @@
 // Nested option structs have keys that differ from their C++ names, so the MRPT_*_CONFIG_VAR
 // macros (which use the variable's spelling) do not fit; these keep one line per key.
 #define SIM_READ(type, field, key) field = c.read_##type(s, key, field)
-#define SIM_WRITE(field, key, comment)                           \
-  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(), \
-          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment)
+#define SIM_WRITE(field, key, comment) core::writeKey(c, s, key, field, comment)
 
 namespace dynslam::sim {
 

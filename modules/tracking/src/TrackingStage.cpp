@@ -9,9 +9,7 @@ namespace {
 
 // One ini key per field; the key is the field's name without the struct prefix.
 #define TRACKING_READ(type, field, key) field = c.read_##type(s, key, field)
-#define TRACKING_WRITE(field, key, comment)                      \
-  c.write(s, key, field, mrpt::config::MRPT_SAVE_NAME_PADDING(), \
-          mrpt::config::MRPT_SAVE_VALUE_PADDING(), comment)
+#define TRACKING_WRITE(field, key, comment) core::writeKey(c, s, key, field, comment)
 
 void requirePositive(double value, const char* key, const std::string& section,
                      const std::string& source) {

@@ -50,6 +50,21 @@ std::vector<std::string> knownKeys(const mrpt::config::CLoadableOptions& options
 void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,
                        const std::string& section);
 
+/// Writes one documented key, `key = value // comment`, padded as MRPT's
+/// MRPT_SAVE_CONFIG_VAR_COMMENT pads: what every saveToConfigFile() here does, and what the key
+/// reference is generated from. One overload per value type keeps MRPT's headers out of this
+/// file (a `const char*` value has its own, so it is never taken for a bool).
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              double value, const std::string& comment);
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              int value, const std::string& comment);
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              bool value, const std::string& comment);
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              const std::string& value, const std::string& comment);
+void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+              const char* value, const std::string& comment);
+
 /// Throws ConfigError naming the first section of `cfg` that is not in `known`.
 void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>& known);
 
