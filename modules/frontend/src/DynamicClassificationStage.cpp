@@ -130,4 +130,18 @@ void DynamicClassificationStage::finish() {
                                 << " rigid sets; camera motion: " << sources);
 }
 
+std::vector<std::pair<std::string, double>> DynamicClassificationStage::statistics() const {
+  if (!classifier_) return {};
+  const auto& c = classifier_->counts();
+  std::vector<std::pair<std::string, double>> out = {
+      {"frames", double(c.frames)},
+      {"features", double(c.features)},
+      {"object_features", double(c.object_features)},
+      {"dynamic_object_frames", double(c.dynamic_objects)},
+      {"rigid_sets", double(c.rigid_sets)}};
+  for (const auto& [source, n] : c.camera_sources)
+    out.emplace_back("camera_motion_" + std::string(toString(source)), double(n));
+  return out;
+}
+
 }  // namespace dynslam::frontend

@@ -26,6 +26,9 @@ class DynamicClassificationStage : public core::Stage {
   void configure(const core::IniConfig& cfg, const std::string& section) override;
   void process(core::Frame& frame) override;
   void finish() override;
+  /// frames, features, object_features, dynamic_object_frames, rigid_sets and the frames whose
+  /// camera motion came from each source (camera_motion_<source>).
+  std::vector<std::pair<std::string, double>> statistics() const override;
 
   const DynamicClassificationOptions& options() const { return options_; }
   /// The classifier after configure() (for benches: the last camera motion, counters).
