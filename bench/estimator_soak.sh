@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Soak run (issue 6): a long simulator sequence through the whole system (params/sim_vio.ini),
+# sampling the process's resident memory every few seconds. Prints the resident set after the
+# first 1,000 frames and at the end, the growth between them (target < 5 %), the run's status
+# and APE.
+#   bash bench/estimator_soak.sh [--build DIR] [--out DIR] [--frames N] [--scenario NAME]
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="$ROOT/build"; OUT="/tmp/dynslam-soak"; FRAMES=10000; SCENARIO=indoor_people_low
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --build) BUILD="$2"; shift 2 ;;
+    --out) OUT="$2"; shift 2 ;;
+    --frames) FRAMES="$2"; shift 2 ;;
+    --scenario) SCENARIO="$2"; shift 2 ;;
+    *) echo "estimator_soak.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+BIN="$BUILD/bin"
+mkdir -p "$OUT"
+S="$OUT/$SCENARIO"
+duration=$(awk -v f="$FRAMES" 'BEGIN { printf "%.3f", f / 30.0 }')
+if [ ! -f "$S/sim.rawlog" ]; then
+  echo "rendering $FRAMES frames of $SCENARIO ..." >&2
+  "$BIN/dynslam-sim" --config "$ROOT/params/sim/$SCENARIO.ini" --out "$S" \
+    --set Scenario.duration="$duration" --quiet > /dev/null 2>&1
+fi
+
+R="$S/soak"
+"$BIN/dynslam" --config "$ROOT/params/sim_vio.ini" --rawlog "$S/sim.rawlog" --out "$R" \
+  --set Detection.objects="$S/objects.txt" > "$R.log" 2>&1 &
+pid=$!
+: > "$R.rss"
+start=$(date +%s)
+while kill -0 "$pid" 2> /dev/null; do
+  rss=$(awk '/^VmRSS/ { print $2 }' "/proc/$pid/status" 2> /dev/null || true)
+  [ -n "$rss" ] && echo "$(( $(date +%s) - start )) $rss" >> "$R.rss"
+  sleep 5
+done
+wait "$pid" || true
+elapsed=$(( $(date +%s) - start ))
+
+fps=$(sed -n 's/^ *"fps": *\([0-9.]*\).*/\1/p' "$R/summary.json" | head -1)
+status=$(sed -n 's/^ *"status": *"\([a-z]*\)".*/\1/p' "$R/summary.json" | head -1)
+# The sample taken when about 1,000 frames had been processed (frames = seconds x fps).
+awk -v fps="$fps" -v total="$elapsed" '
+  { t[NR] = $1; m[NR] = $2 }
+  END {
+    if (NR < 2) { print "too few memory samples"; exit }
+    k = 1; while (k < NR && t[k] * fps < 1000) k++
+    growth = 100 * (m[NR] - m[k]) / m[k]
+    printf "resident memory: %.1f MB after ~1000 frames (t = %d s), %.1f MB at the end (t = %d s): growth %.2f %% (target < 5 %%)\n", m[k] / 1024, t[k], m[NR] / 1024, t[NR], growth
+  }' "$R.rss"
+"$BIN/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align se3 --json "$R/ape.json" > /dev/null 2>&1 || true
+echo "status $status, $FRAMES frames in ${elapsed} s ($fps FPS), APE RMSE $(sed -n 's/^ *"rmse": *\([0-9.e+-]*\).*/\1/p' "$R/ape.json" | head -1) m, restarts $(sed -n 's/^ *"resets": *\([0-9]*\).*/\1/p' "$R/summary.json" | head -1)"
