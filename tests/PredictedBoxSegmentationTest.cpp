@@ -105,3 +105,33 @@ TEST(PredictedBoxSegmentation, UnknownBoxesValueIsAConfigErrorNamingIt) {
     EXPECT_NE(std::string(e.what()).find("bad.ini"), std::string::npos) << e.what();
   }
 }
+
+TEST(PredictedBoxSegmentation, AnObjectTheDetectorMissedGetsItsPredictedMask) {
+  core::StageRegistry registry;
+  segmentation::registerStages(registry);
+  tracking::registerStages(registry);
+  core::Pipeline pipeline(core::IniConfig::fromText(kRealtimeIni, "realtime.ini"), registry);
+  for (int k = 0; k < 12; ++k) {  // detector on every frame (fresh), except a miss at 10
+    core::Frame f = frameAt(k);
+    f.detections_fresh = true;
+    if (f.detections.empty() || k == 10) {
+      f.detections.clear();
+      if (k != 10) {
+        core::Detection d;
+        d.box = cv::Rect2f(personAt(k));
+        d.category = "person";
+        f.detections.push_back(d);
+      }
+    }
+    pipeline.process(f);
+    if (k == 10) {
+      ASSERT_EQ(f.object_masks.size(), 1u) << "the coasting track's predicted box";
+      EXPECT_EQ(f.object_masks[0].detection, -1);
+      EXPECT_EQ(f.object_masks[0].track, 0);
+      EXPECT_GT(maskIoU(f.object_masks[0], personAt(k)), 0.9);
+    } else if (k > 0) {
+      ASSERT_EQ(f.object_masks.size(), 1u) << "frame " << k << ": the detection's mask only";
+      EXPECT_EQ(f.object_masks[0].detection, 0);
+    }
+  }
+}

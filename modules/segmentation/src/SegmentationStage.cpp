@@ -66,8 +66,8 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
         "variants, not the method)");
   core::writeKey(c, s, "boxes",
         std::string(boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks"),
-        "detections: the detector's boxes; predicted_tracks: confirmed tracks' predicted boxes on "
-        "frames without fresh detections (real time; list the stage again after Tracking)");
+        "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "
+        "tracks no detection took this frame (list the stage again after Tracking)");
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
@@ -80,11 +80,13 @@ void SegmentationStage::configure(const core::IniConfig& cfg, const std::string&
 }
 
 void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
+  // Every confirmed track that no detection of this frame took: all of them on a frame the
+  // real-time detector skipped, the coasting ones (the detector missed the object) otherwise.
   std::vector<core::Detection> boxes;
   std::vector<int> trackOf;
   for (size_t i = 0; i < frame.tracks.size(); ++i) {
     const auto& t = frame.tracks[i];
-    if (t.state != core::TrackState::Confirmed) continue;
+    if (t.state != core::TrackState::Confirmed || t.detection >= 0) continue;
     core::Detection box;
     box.box = t.box;
     box.category = t.category;
@@ -95,16 +97,17 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
   if (frame.depth.empty() && !boxes.empty())
     throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
                              " has predicted boxes but no depth image");
-  frame.object_masks = segmenter_.segment(frame.depth, boxes);
-  for (size_t k = 0; k < frame.object_masks.size(); ++k) {
-    frame.object_masks[k].detection = -1;
-    frame.object_masks[k].track = trackOf[k];
+  auto masks = segmenter_.segment(frame.depth, boxes);
+  for (size_t k = 0; k < masks.size(); ++k) {
+    masks[k].detection = -1;
+    masks[k].track = trackOf[k];
   }
+  if (!frame.detections_fresh) frame.object_masks.clear();
+  frame.object_masks.insert(frame.object_masks.end(), masks.begin(), masks.end());
 }
 
 void SegmentationStage::process(core::Frame& frame) {
   if (options_.boxes == SegmentedBoxes::PredictedTracks) {
-    if (frame.detections_fresh) return;  // the detections' masks are already there
     segmentPredictedTracks(frame);
   } else {
     if (frame.depth.empty() && !frame.detections.empty())

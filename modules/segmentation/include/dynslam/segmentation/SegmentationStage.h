@@ -4,11 +4,12 @@
 //  - detections (default): one core::ObjectMask per core::Detection of the frame, in the same
 //    order, into Frame::object_masks. Runs after a detector stage, before tracking (the tracker
 //    takes each detection's depth d_t from its mask).
-//  - predicted_tracks: real-time mode's stand-in for detections (method.md section 2: "predicted
-//    boxes also serve frames in which the detector gave no result"). Runs after the tracking
-//    stage; on a frame without fresh detections it segments the predicted box of every
-//    confirmed track, mask.detection = -1 and mask.track = the track's index; on frames with
-//    fresh detections it does nothing. A real-time pipeline therefore lists the class twice:
+//  - predicted_tracks: runs after the tracking stage and adds a mask for every confirmed track
+//    that no detection of this frame took, segmenting its predicted box (mask.detection = -1,
+//    mask.track = the track's index). On a frame the real-time detector skipped that is every
+//    confirmed track (method.md section 2: "predicted boxes also serve frames in which the
+//    detector gave no result"); on a frame with detections it covers the objects the detector
+//    missed, while their tracks coast. A pipeline therefore lists the class twice:
 //      stages = Detection, Segmentation, Tracking, Segmentation:PredictedBoxes
 //    with [PredictedBoxes] boxes = predicted_tracks.
 #include <dynslam/core/Stage.h>
