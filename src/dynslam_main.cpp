@@ -14,6 +14,7 @@ Plays FILE.rawlog (RGB-D CObservation3DRangeScan, CObservationIMU, CObservationG
 or action/sensory-frame layout) through the stages listed in [pipeline] stages of FILE.ini, and
 writes in DIR:
   trajectory.tum   camera poses (timestamp tx ty tz qx qy qz qw), written as they are estimated
+  objects/ID.tum   the world pose of each object the estimator follows (track id ID), same format
   summary.json     status, counts per observation type, frames, fps, per-stage median times
 --frames DIR also writes DIR/NNNNNN.png per frame: the colour image with the detector boxes, the
 object masks and the tracks (id, class, depth) drawn on it.

@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <thread>
 
@@ -46,6 +47,7 @@ struct RunRecord {
   std::string status = "ok";
   std::string error;
   size_t frames = 0, poses = 0, imu_samples = 0, gnss_fixes = 0;
+  size_t objects = 0;  ///< object trajectories written (objects/<id>.tum)
   double wall_s = 0.0;
   bool estimator = false;
   std::vector<double> lag_ms;  ///< --realtime: how late each frame reached the pipeline
@@ -89,7 +91,7 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   j.key("overrides").beginArray();
   for (const auto& o : args.overrides) j.value(o);
   j.endArray();
-  j.member("frames", rec.frames).member("poses", rec.poses);
+  j.member("frames", rec.frames).member("poses", rec.poses).member("objects", rec.objects);
   j.member("estimator", rec.estimator);
   j.member("imu_samples", rec.imu_samples).member("gnss_fixes", rec.gnss_fixes);
   j.member("wall_time_s", rec.wall_s);
@@ -153,6 +155,7 @@ int runDynslam(const RunnerArgs& args) {
   std::optional<core::Pipeline> pipeline;
   std::optional<io::SensorSync> sync;
   std::optional<io::TumTrajectoryWriter> trajectory;
+  std::map<int, io::TumTrajectoryWriter> objectTrajectories;  // objects/<id>.tum, opened lazily
 
   std::error_code ec;
   fs::create_directories(args.out, ec);
@@ -215,6 +218,19 @@ int runDynslam(const RunnerArgs& args) {
           trajectory->append({frame.t, *frame.T_world_camera});
           ++rec.poses;
         }
+        for (const auto& object : frame.object_poses) {
+          auto it = objectTrajectories.find(object.object_id);
+          if (it == objectTrajectories.end()) {
+            const fs::path dir = fs::path(args.out) / "objects";
+            fs::create_directories(dir);
+            it = objectTrajectories
+                     .emplace(object.object_id,
+                              (dir / (std::to_string(object.object_id) + ".tum")).string())
+                     .first;
+          }
+          it->second.append({frame.t, object.T_world_object});
+        }
+        rec.objects = objectTrajectories.size();
       }
       ready.clear();
       if (!args.quiet) progress.update(rec.frames, source.progress());

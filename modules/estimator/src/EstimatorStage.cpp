@@ -302,6 +302,7 @@ void EstimatorStage::process(core::Frame& frame) {
   previous_body_ = last_body_;
   last_body_ = T_wb;
   frame.T_world_camera = T_wb * T_ic;
+  objects_.update(frame);
 }
 
 void EstimatorStage::finish() {

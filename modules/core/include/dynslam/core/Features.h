@@ -47,4 +47,12 @@ struct RigidSet {
   Eigen::Vector3d virtual_centroid = Eigen::Vector3d::Zero();  ///< camera frame, this frame
 };
 
+/// The estimated world pose of a tracked object (a rigid object, or the rigid point set of a
+/// non-rigid one) at this frame: its frame is the rigid set's first virtual centroid with the
+/// world's axes, carried along by the set's motion.
+struct ObjectPose {
+  int object_id = -1;  ///< Track::id
+  Eigen::Isometry3d T_world_object = Eigen::Isometry3d::Identity();
+};
+
 }  // namespace dynslam::core

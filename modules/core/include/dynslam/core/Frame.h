@@ -81,6 +81,9 @@ struct Frame {
 
   /// Camera pose in the world, set by the stage that estimates it.
   std::optional<Eigen::Isometry3d> T_world_camera;
+  /// World poses of the objects the estimator follows this frame (the runner writes one TUM
+  /// trajectory per object id).
+  std::vector<ObjectPose> object_poses;
 };
 
 }  // namespace dynslam::core

@@ -3,7 +3,8 @@
 // the frame's tracked features (FeatureTracking, and DynamicClassification when it ran),
 // selects keyframes, keeps the sliding window (SlidingWindow) and writes the camera pose of every
 // frame into Frame::T_world_camera: keyframes from the window's solve, the frames between them by
-// PnP against the window's landmarks.
+// PnP against the window's landmarks. It also carries the tracked objects' rigid point sets
+// into world trajectories (ObjectTrajectories: Frame::object_poses).
 //
 // Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9):
 //   none   - every feature, whatever its class (no dynamic handling, like VINS-Mono);
@@ -22,6 +23,7 @@
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/KeyframeImu.h>
 #include <dynslam/estimator/KeyframeSelector.h>
+#include <dynslam/estimator/ObjectTrajectories.h>
 #include <dynslam/estimator/SlidingWindow.h>
 
 #include <mrpt/config/CLoadableOptions.h>
@@ -80,6 +82,7 @@ class EstimatorStage : public core::Stage {
   EstimatorOptions options_;
   std::unique_ptr<SlidingWindow> window_;
   std::unique_ptr<KeyframeImu> imu_;
+  ObjectTrajectories objects_;
   KeyframeSelector selector_;
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
   std::vector<double> solve_ms_;

@@ -1,0 +1,32 @@
+#pragma once
+// World trajectories of the tracked objects from the front-end's rigid point sets (issue 6
+// item 9) and the estimated camera poses. A set's motion maps its points from the previous
+// camera frame to this one, q = R p + t; in the world that is
+//   M = T_world_camera(k) [R | t] T_world_camera(k-1)^-1,
+// and the object's pose moves as L_k = M L_(k-1). A new object starts at its set's virtual
+// centroid with the world's axes. An object whose set is not seen for a frame keeps its last
+// pose and continues when the set comes back in the next frame; after a longer gap (the camera
+// pose of the frame before is needed) it starts again from the new centroid.
+#include <dynslam/core/Frame.h>
+
+#include <map>
+
+namespace dynslam::estimator {
+
+class ObjectTrajectories {
+ public:
+  /// Updates the objects seen in `frame` (its rigid_sets, its T_world_camera, which must be set)
+  /// and writes their poses into frame.object_poses.
+  void update(core::Frame& frame);
+
+ private:
+  struct Followed {
+    Eigen::Isometry3d T_world_object = Eigen::Isometry3d::Identity();
+    std::size_t last_frame = 0;
+  };
+  std::map<int, Followed> objects_;
+  std::optional<Eigen::Isometry3d> previous_camera_;
+  std::size_t previous_frame_ = 0;
+};
+
+}  // namespace dynslam::estimator
