@@ -10,7 +10,14 @@
 namespace dynslam::estimator {
 namespace {
 
-const char* handlingName(DynamicHandling h) { return h == DynamicHandling::None ? "none" : "remove"; }
+const char* handlingName(DynamicHandling h) {
+  switch (h) {
+    case DynamicHandling::None: return "none";
+    case DynamicHandling::Remove: return "remove";
+    case DynamicHandling::Full: return "full";
+  }
+  return "remove";
+}
 
 /// The nearest rigid transform: products of many poses drift off SO(3) in floating point, and a
 /// slightly scaled rotation compounds frame after frame through the motion prediction.
@@ -69,9 +76,15 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     dynamic_handling = DynamicHandling::None;
   else if (h == "remove")
     dynamic_handling = DynamicHandling::Remove;
+  else if (h == "full")
+    dynamic_handling = DynamicHandling::Full;
   else
-    throw std::invalid_argument("dynamic_handling = '" + h + "': expected none or remove" +
-                                (h == "full" ? " (full, the paper's method, is not built yet)" : ""));
+    throw std::invalid_argument("dynamic_handling = '" + h + "': expected none, remove or full");
+  nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
+  rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
+  if (rigid_factors)
+    throw std::invalid_argument(
+        "rigid_factors = true: the rigid-object factors (r_O, r_om) are not in the window yet");
 }
 
 void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -115,7 +128,12 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "max_gyro_bias", max_gyro_bias, "rad/s; a larger gyro bias estimate is a failure");
   core::writeKey(c, s, "max_acc_bias", max_acc_bias, "m/s^2; a larger accelerometer bias estimate is a failure");
   core::writeKey(c, s, "dynamic_handling", std::string(handlingName(dynamic_handling)),
-        "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS)");
+        "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS); "
+        "full: the paper (see nonrigid_factors, rigid_factors)");
+  core::writeKey(c, s, "nonrigid_factors", nonrigid_factors,
+                 "with full: NonRigid features as constant-velocity world points (r_D)");
+  core::writeKey(c, s, "rigid_factors", rigid_factors,
+                 "with full: rigid-object factors r_O, r_om (not built yet: must be false)");
 }
 
 EstimatorStage::EstimatorStage() = default;
@@ -210,15 +228,19 @@ void EstimatorStage::tryImuInitialization(double t) {
 
 void EstimatorStage::process(core::Frame& frame) {
   if (frames_++ == 0) first_t_ = frame.t;
-  std::vector<FeatureObservation> observations;
-  std::map<std::int64_t, Eigen::Vector2d> pixels;
+  std::vector<FeatureObservation> observations, nonrigid;
+  std::map<std::int64_t, Eigen::Vector2d> pixels;  // the static ones: keyframes and PnP
   for (const auto& f : frame.features) {
-    if (options_.dynamic_handling == DynamicHandling::Remove &&
-        f.feature_class != core::FeatureClass::Static)
-      continue;
     const Eigen::Vector2d px(f.pixel.x, f.pixel.y);
-    observations.push_back({f.id, px, f.depth > 0 ? double(f.depth) : 0.0});
-    pixels[f.id] = px;
+    const FeatureObservation o{f.id, px, f.depth > 0 ? double(f.depth) : 0.0};
+    const bool isStatic = f.feature_class == core::FeatureClass::Static;
+    if (options_.dynamic_handling == DynamicHandling::None || isStatic) {
+      observations.push_back(o);
+      pixels[f.id] = px;
+    } else if (options_.dynamic_handling == DynamicHandling::Full && options_.nonrigid_factors &&
+               f.feature_class == core::FeatureClass::NonRigid) {
+      nonrigid.push_back(o);
+    }
   }
   if (options_.use_imu && !imu_) {
     for (const auto& s : frame.imu)
@@ -251,6 +273,8 @@ void EstimatorStage::process(core::Frame& frame) {
     in.T_world_body = T_wb;
     in.velocity = velocity;
     in.features = std::move(observations);
+    nonrigid_observations_ += nonrigid.size();
+    in.nonrigid_features = std::move(nonrigid);
     if (imu_)
       in.preintegration = imu_->cutAt(frame.t,
                                       window_->empty() ? Eigen::Vector3d::Zero()
@@ -321,7 +345,8 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
           {"pnp_failures", double(pnp_failures_)},
           {"resets", double(resets_)},
           {"imu_initialized_at", imu_initialized_at_},
-          {"imu_init_attempts", double(imu_init_attempts_)}};
+          {"imu_init_attempts", double(imu_init_attempts_)},
+          {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0}};
 }
 
 }  // namespace dynslam::estimator

@@ -3,6 +3,8 @@
 #include "dynslam/estimator/Marginalizer.h"
 #include "dynslam/estimator/StateBlocks.h"
 #include "dynslam/estimator/factors/ImuFactor.h"
+#include "dynslam/estimator/factors/NonRigidConstantVelocityFactor.h"
+#include "dynslam/estimator/factors/NonRigidDepthFactor.h"
 #include "dynslam/estimator/factors/RigidSmoothMotionFactor.h"
 #include "dynslam/estimator/factors/StaticReprojectionFactor.h"
 #include "dynslam/estimator/factors/TransferredDepthFactor.h"
@@ -28,6 +30,7 @@ class SlidingWindow::ProblemBuilder {
   int forEachFactor(std::int64_t only, const FactorSink& sink) {
     int landmarks = 0;
     for (auto& [id, l] : w_.landmarks_.all()) landmarks += landmarkFactors(l, only, sink);
+    for (auto& [id, p] : w_.nonrigid_) landmarks += nonRigidFactors(p, only, sink);
     for (size_t k = 1; k < w_.keyframes_.size(); ++k) {
       Keyframe& a = w_.keyframes_[k - 1];
       Keyframe& b = w_.keyframes_[k];
@@ -49,6 +52,35 @@ class SlidingWindow::ProblemBuilder {
   }
 
  private:
+  /// r_D for one non-rigid point seen in at least two keyframes: the constant-velocity
+  /// reprojection and the measured depth in each. With `only`, the point's factors when it was
+  /// first seen in that keyframe (it is marginalised with it), none otherwise.
+  int nonRigidFactors(NonRigidPoint& p, std::int64_t only, const FactorSink& sink) {
+    if (p.observations.size() < 2) return 0;
+    if (only >= 0 && p.observations.begin()->first != only) return 0;
+    const Eigen::Vector3d position(p.position), velocity(p.velocity);
+    const Eigen::Isometry3d T_bc = poseFromBlock(w_.extrinsic_);
+    std::vector<std::pair<Keyframe*, const LandmarkObservation*>> seen;
+    for (auto& [kf, obs] : p.observations) {
+      Keyframe* k = w_.keyframe(kf);
+      if (!k) continue;
+      const Eigen::Vector3d inCamera =
+          (poseFromBlock(k->pose) * T_bc).inverse() * (position + (k->t - p.t0) * velocity);
+      if (inCamera.z() >= 0.05) seen.emplace_back(k, &obs);
+    }
+    if (seen.size() < 2) return 0;  // position and velocity need two views
+    for (const auto& [k, obs] : seen) {
+      const double dt = k->t - p.t0;
+      sink(std::make_shared<NonRigidConstantVelocityFactor>(w_.camera_, obs->pixel, dt,
+                                                            w_.params_.pixel_sigma),
+           &huber_, {k->pose, w_.extrinsic_, p.position, p.velocity});
+      if (obs->depth > 0)
+        sink(std::make_shared<NonRigidDepthFactor>(dt, obs->depth, w_.params_.depth_noise),
+             &huber_, {k->pose, w_.extrinsic_, p.position, p.velocity});
+    }
+    return 1;
+  }
+
   /// The factors of one landmark: the depth at its anchor, and per later observation the
   /// reprojection and (optionally) the depth there. Observations the current estimate puts
   /// behind a camera are left out (the factor cannot be evaluated there).
@@ -132,6 +164,22 @@ SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
   keyframes_.push_back(k);
   for (const auto& f : input.features)
     landmarks_.observe(f.id, k.id, {f.pixel, f.depth}, 3.0);
+  for (const auto& f : input.nonrigid_features) {
+    auto it = nonrigid_.find(f.id);
+    if (it == nonrigid_.end()) {
+      if (!(f.depth > 0)) continue;  // a new point needs its depth to be placed
+      NonRigidPoint p;
+      p.t0 = k.t;
+      const Eigen::Vector3d world =
+          input.T_world_body * (poseFromBlock(extrinsic_) * (camera_.bearing(f.pixel) * f.depth));
+      for (int i = 0; i < 3; ++i) {
+        p.position[i] = world(i);
+        p.velocity[i] = 0;
+      }
+      it = nonrigid_.emplace(f.id, p).first;
+    }
+    it->second.observations[k.id] = {f.pixel, f.depth};
+  }
   SolveReport report = solve();
   if (int(keyframes_.size()) > params_.window_size) marginalizeOldest();
   return report;
@@ -212,6 +260,11 @@ void SlidingWindow::marginalizeOldest() {
   });
   for (auto& [id, l] : landmarks_.all())
     if (l.anchor == oldest.id) leaving.insert(&l.inverse_depth);
+  for (auto& [id, p] : nonrigid_)
+    if (p.observations.begin()->first == oldest.id) {
+      leaving.insert(p.position);
+      leaving.insert(p.velocity);
+    }
   const auto prior = marginalizer.marginalize(leaving);
   prior_ = {prior.factor, prior.blocks};
 
@@ -222,6 +275,9 @@ void SlidingWindow::marginalizeOldest() {
     const double z = ((poseFromBlock(k->pose) * poseFromBlock(extrinsic_)).inverse() * world).z();
     return z > 0.05 ? 1.0 / z : 1.0 / 3.0;
   });
+  // Non-rigid points first seen in the oldest keyframe went into the prior with it.
+  for (auto it = nonrigid_.begin(); it != nonrigid_.end();)
+    it = it->second.observations.begin()->first == oldest.id ? nonrigid_.erase(it) : std::next(it);
   keyframes_.pop_front();
 }
 
@@ -269,6 +325,12 @@ Eigen::Vector3d SlidingWindow::latestAccBias() const {
 }
 Eigen::Vector3d SlidingWindow::latestGyroBias() const {
   return Eigen::Vector3d(keyframes_.back().speed_bias + 6);
+}
+
+std::optional<Eigen::Vector3d> SlidingWindow::nonRigidVelocity(std::int64_t id) const {
+  const auto it = nonrigid_.find(id);
+  if (it == nonrigid_.end() || it->second.observations.size() < 2) return std::nullopt;
+  return Eigen::Vector3d(it->second.velocity);
 }
 
 std::vector<std::pair<std::int64_t, Eigen::Vector3d>> SlidingWindow::landmarkPositions() const {

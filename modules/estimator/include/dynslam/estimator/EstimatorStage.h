@@ -8,8 +8,11 @@
 //
 // Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9):
 //   none   - every feature, whatever its class (no dynamic handling, like VINS-Mono);
-//   remove - only features classified Static (dynamic features dropped, like Dynamic-VINS).
-// (The paper's full method, rigid and non-rigid factors, is not built yet: issue 6.)
+//   remove - only features classified Static (dynamic features dropped, like Dynamic-VINS);
+//   full   - the paper: Static features as landmarks, and with nonrigid_factors the NonRigid
+//            features as constant-velocity world points (r_D). The rigid-object factors (r_O,
+//            r_om) are not in the window yet: rigid_factors = true is refused, and Rigid
+//            features are dropped as in remove.
 //
 // Sensors: RGB-D, and the IMU when the frames carry gyro + accelerometer samples and use_imu is
 // on. The window starts from RGB-D alone (a constant-motion prior ties consecutive keyframes,
@@ -35,12 +38,14 @@
 
 namespace dynslam::estimator {
 
-enum class DynamicHandling { None, Remove };
+enum class DynamicHandling { None, Remove, Full };
 
 struct EstimatorOptions : mrpt::config::CLoadableOptions {
   SlidingWindowParams window;
   KeyframeSelectorParams keyframes;
   DynamicHandling dynamic_handling = DynamicHandling::Remove;
+  bool nonrigid_factors = true;  ///< with full: r_D for NonRigid features (Table 9 ablation)
+  bool rigid_factors = false;    ///< with full: r_O / r_om (not built yet: true is refused)
   bool use_imu = true;  ///< use the IMU when the frames carry gyro + accelerometer samples
   ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
@@ -65,7 +70,7 @@ class EstimatorStage : public core::Stage {
   void finish() override;
   bool estimatesPose() const override { return true; }
   /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets, imu_initialized_at (s
-  /// of stream, -1 never), imu_init_attempts.
+  /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D).
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
@@ -87,7 +92,7 @@ class EstimatorStage : public core::Stage {
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
   std::vector<double> solve_ms_;
   std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
-  std::size_t imu_init_attempts_ = 0;
+  std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0;
   double first_t_ = 0, imu_initialized_at_ = -1;
   std::string last_init_failure_;
 };

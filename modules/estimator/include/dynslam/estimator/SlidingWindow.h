@@ -8,7 +8,9 @@
 //
 // Factors (one per file in factors/): StaticReprojectionFactor (Huber loss) and
 // DepthMeasurementFactor / TransferredDepthFactor per static landmark, ImuFactor, the motion
-// prior (RigidSmoothMotionFactor on the body poses), MarginalizationFactor.
+// prior (RigidSmoothMotionFactor on the body poses), MarginalizationFactor, and per non-rigid
+// feature NonRigidConstantVelocityFactor + NonRigidDepthFactor (r_D). A non-rigid point leaves
+// the window with the keyframe it was first seen in (marginalised with it).
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/LandmarkTable.h>
 #include <dynslam/estimator/factors/DepthMeasurementFactor.h>
@@ -20,7 +22,9 @@
 
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +56,9 @@ struct KeyframeInput {
   Eigen::Isometry3d T_world_body = Eigen::Isometry3d::Identity();  ///< initial guess
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();              ///< initial guess (IMU)
   std::vector<FeatureObservation> features;                        ///< static features
+  /// Features on dynamic non-rigid objects (method.md r_D): each a world point moving at
+  /// constant velocity over the window; new ones need a measured depth.
+  std::vector<FeatureObservation> nonrigid_features;
   /// IMU mode: the preintegration from the previous keyframe to this one (null for the first).
   std::shared_ptr<ImuPreintegration> preintegration;
 };
@@ -95,6 +102,10 @@ class SlidingWindow {
   void switchToImu(const ImuInitialization& init);
   bool usesImu() const { return params_.use_imu; }
 
+  /// The world velocity of non-rigid feature `id` when the window estimates it (seen in two
+  /// keyframes or more), else nothing.
+  std::optional<Eigen::Vector3d> nonRigidVelocity(std::int64_t id) const;
+
   /// World positions of the landmarks seen in at least two keyframes, for tracking frames
   /// between keyframes.
   std::vector<std::pair<std::int64_t, Eigen::Vector3d>> landmarkPositions() const;
@@ -106,6 +117,13 @@ class SlidingWindow {
     double pose[7];
     double speed_bias[9];
     std::shared_ptr<ImuPreintegration> preintegration;  // from the previous keyframe
+  };
+  /// A non-rigid feature: world position at its first keyframe's time t0 and world velocity.
+  struct NonRigidPoint {
+    double t0 = 0;
+    double position[3];
+    double velocity[3];
+    std::map<std::int64_t, LandmarkObservation> observations;  // by keyframe id
   };
   struct Prior {
     std::shared_ptr<MarginalizationFactor> factor;
@@ -125,6 +143,7 @@ class SlidingWindow {
   std::deque<Keyframe> keyframes_;
   std::int64_t next_id_ = 0;
   LandmarkTable landmarks_;
+  std::map<std::int64_t, NonRigidPoint> nonrigid_;
   Prior prior_;
 };
 
