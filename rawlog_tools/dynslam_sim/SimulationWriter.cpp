@@ -37,13 +37,15 @@ std::string frameName(size_t index) {
 
 }  // namespace
 
-SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Sequence& sequence)
+SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Sequence& sequence,
+                                   SensorFaults faults)
     : sim_(sequence),
       dir_(outDir),
       start_time_(sequence.startTime()),
       rawlog_((fs::create_directories(outDir), (fs::path(outDir) / "sim.rawlog").string())),
       images_(ImageStorage::External, (fs::path(outDir) / "sim_Images").string()),
-      T_body_imu_(sequence.T_body_imu()) {
+      T_body_imu_(sequence.T_body_imu()),
+      faults_(faults) {
   fs::create_directories(fs::path(dir_) / "labels");
   groundtruth_ = openText(fs::path(dir_) / "groundtruth.tum",
                           "# camera (optical frame) pose in the world: t tx ty tz qx qy qz qw\n");
@@ -56,6 +58,8 @@ void SimulationWriter::writeSamplesUpTo(double t) {
   const auto& imu = sim_.imu();
   for (; next_imu_ < imu.size() && imu[next_imu_].t <= t; ++next_imu_) {
     const auto& m = imu[next_imu_];
+    if (m.t >= faults_.imu_gap_start && m.t < faults_.imu_gap_start + faults_.imu_gap_duration)
+      continue;
     const auto obs =
         makeImuObservation(mrpt::Clock::fromDouble(stamp(m.t)), kImuLabel,
                            std::array<double, 3>{m.gyro.x(), m.gyro.y(), m.gyro.z()},
@@ -80,11 +84,18 @@ void SimulationWriter::write(const sim::SimFrame& frame) {
   RgbdFrame rgbd;
   rgbd.timestamp = mrpt::Clock::fromDouble(stamp(frame.t));
   rgbd.sensorLabel = kRgbdLabel;
+  const auto within = [&](long first, long count) {
+    return first >= 0 && long(frame.index) >= first && long(frame.index) < first + count;
+  };
   frame.image.depth.convertTo(rgbd.depth, CV_16UC1, 1000.0);  // mm; 0 stays invalid
+  if (within(faults_.no_depth_first, faults_.no_depth_count)) rgbd.depth.setTo(0);
+  const cv::Mat colour = within(faults_.black_first, faults_.black_count)
+                             ? cv::Mat::zeros(frame.image.rgb.size(), frame.image.rgb.type())
+                             : frame.image.rgb;
   rgbd.rangeUnits = 0.001f;
   rgbd.maxRange = static_cast<float>(sim_.maxRange());
   rgbd.intrinsics = {k.fx, k.fy, k.cx, k.cy};
-  rgbd.colour = images_.storePixels(frame.image.rgb, "colour_" + frameName(frame.index));
+  rgbd.colour = images_.storePixels(colour, "colour_" + frameName(frame.index));
   rgbd.depthSourceName = "simulated frame " + std::to_string(frame.index);
   const auto obs = makeRgbdObservation(rgbd);
   setCameraPoseOnBody(*obs, sim_.T_body_camera());

@@ -17,9 +17,18 @@
 
 namespace dynslam::rawlog_tools {
 
+/// Sensor faults written into the rawlog on purpose, to test how the system survives them
+/// (issue 6: an IMU gap, black frames, frames without depth). The ground truth is unchanged.
+struct SensorFaults {
+  double imu_gap_start = -1, imu_gap_duration = 0;  ///< s from the start; IMU samples dropped
+  long black_first = -1, black_count = 0;           ///< frames whose colour image is all black
+  long no_depth_first = -1, no_depth_count = 0;     ///< frames whose depth is all 0 (invalid)
+};
+
 class SimulationWriter {
  public:
-  SimulationWriter(const std::string& outDir, const sim::Sequence& sequence);
+  SimulationWriter(const std::string& outDir, const sim::Sequence& sequence,
+                   SensorFaults faults = {});
 
   /// Writes the IMU and GNSS samples up to the frame's time, then the frame.
   void write(const sim::SimFrame& frame);
@@ -40,6 +49,7 @@ class SimulationWriter {
   std::ofstream groundtruth_, objects_, biases_;
   Eigen::Isometry3d T_body_imu_;  // every IMU observation's sensorPose
   size_t next_imu_ = 0, next_gnss_ = 0;
+  SensorFaults faults_;
 };
 
 }  // namespace dynslam::rawlog_tools

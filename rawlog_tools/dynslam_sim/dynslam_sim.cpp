@@ -20,11 +20,15 @@ namespace {
 const char* kUsage =
     R"(usage: dynslam-sim --config params/sim/NAME.ini --out DIR [--set section.key=value]...
                    [--contact-sheet FILE.png] [--sheet-frames N] [--quiet]
+                   [--imu-gap START:SECONDS] [--black-frames FIRST:COUNT] [--no-depth FIRST:COUNT]
 
 Renders the scenario of NAME.ini (sections [Scenario] [Camera] [People] [Cars] [Imu] [Gnss]
 [Noise] [Augment]; scene = room | market | street, or augment: a real rawlog with movers)
 and writes in DIR: sim.rawlog (+ sim_Images/), groundtruth.tum, objects.txt (format in its
 header), labels/NNNNNN.png (16-bit instance ids), imu_biases.txt.
+--imu-gap, --black-frames, --no-depth write sensor faults into the rawlog on purpose (IMU samples
+dropped from START seconds on, all-black colour images, all-invalid depth), the ground truth
+unchanged: robustness tests.
 --contact-sheet also writes a PNG of N frames (default 4) as colour | depth | labels.
 )";
 /// The sequence [Scenario] scene asks for: fully synthetic, or a real one with movers inserted.
@@ -38,8 +42,9 @@ std::unique_ptr<dynslam::sim::Sequence> makeSequence(const dynslam::sim::Scenari
 int main(int argc, char** argv) {
   using namespace dynslam;
   return core::runProgram("dynslam-sim", [&] {
-    core::CommandLine cl({"--config", "--out", "--contact-sheet", "--sheet-frames"}, {"--quiet"},
-                         {"--set"});
+    core::CommandLine cl({"--config", "--out", "--contact-sheet", "--sheet-frames", "--imu-gap",
+                          "--black-frames", "--no-depth"},
+                         {"--quiet"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
@@ -50,7 +55,23 @@ int main(int argc, char** argv) {
     options.load(cfg);
     const std::unique_ptr<sim::Sequence> sequence = makeSequence(options);
     const sim::Sequence& simulator = *sequence;
-    rawlog_tools::SimulationWriter writer(cl.required("--out"), simulator);
+    rawlog_tools::SensorFaults faults;
+    const auto pair = [&](const char* flag, auto& first, auto& second) {
+      if (!cl.has(flag)) return;
+      const std::string v = cl.valueOr(flag, "");
+      const auto colon = v.find(':');
+      try {
+        if (colon == std::string::npos) throw std::invalid_argument("no colon");
+        first = static_cast<std::decay_t<decltype(first)>>(std::stod(v.substr(0, colon)));
+        second = static_cast<std::decay_t<decltype(second)>>(std::stod(v.substr(colon + 1)));
+      } catch (const std::exception&) {
+        throw core::UsageError(std::string(flag) + " '" + v + "': expected FIRST:AMOUNT");
+      }
+    };
+    pair("--imu-gap", faults.imu_gap_start, faults.imu_gap_duration);
+    pair("--black-frames", faults.black_first, faults.black_count);
+    pair("--no-depth", faults.no_depth_first, faults.no_depth_count);
+    rawlog_tools::SimulationWriter writer(cl.required("--out"), simulator, faults);
 
     const size_t frames = simulator.frameCount();
     const long long sheetFrames = cl.optionalInteger("--sheet-frames").value_or(4);

@@ -42,6 +42,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   w.window_size = c.read_int(s, "window_size", w.window_size);
   w.max_iterations = c.read_int(s, "max_iterations", w.max_iterations);
   w.max_solver_time_s = c.read_double(s, "max_solver_time", w.max_solver_time_s);
+  w.solver_threads = c.read_int(s, "solver_threads", w.solver_threads);
   w.pixel_sigma = c.read_double(s, "pixel_sigma", w.pixel_sigma);
   w.huber_sigmas = c.read_double(s, "huber_sigmas", w.huber_sigmas);
   w.depth_noise.a = c.read_double(s, "depth_sigma_a", w.depth_noise.a);
@@ -61,6 +62,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   max_speed = c.read_double(s, "max_speed", max_speed);
   max_gyro_bias = c.read_double(s, "max_gyro_bias", max_gyro_bias);
   max_acc_bias = c.read_double(s, "max_acc_bias", max_acc_bias);
+  min_keyframe_features = c.read_int(s, "min_keyframe_features", min_keyframe_features);
   use_imu = c.read_bool(s, "use_imu", use_imu);
   auto& n = window.imu_noise;
   n.acc_noise = c.read_double(s, "acc_noise", n.acc_noise);
@@ -93,6 +95,8 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "window_size", w.window_size, "keyframes in the sliding window");
   core::writeKey(c, s, "max_iterations", w.max_iterations, "Ceres iterations per keyframe solve");
   core::writeKey(c, s, "max_solver_time", w.max_solver_time_s, "s; Ceres wall-time limit per keyframe solve");
+  core::writeKey(c, s, "solver_threads", w.solver_threads,
+                 "Ceres threads; 1 keeps runs repeatable (2: faster, results vary run to run)");
   core::writeKey(c, s, "pixel_sigma", w.pixel_sigma, "px; feature position noise");
   core::writeKey(c, s, "huber_sigmas", w.huber_sigmas, "Huber threshold on whitened residuals");
   core::writeKey(c, s, "depth_sigma_a", w.depth_noise.a, "m; depth noise sigma_d = a + b d^2");
@@ -127,6 +131,8 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "max_speed", max_speed, "m/s; a faster estimate is a failure (window restarted)");
   core::writeKey(c, s, "max_gyro_bias", max_gyro_bias, "rad/s; a larger gyro bias estimate is a failure");
   core::writeKey(c, s, "max_acc_bias", max_acc_bias, "m/s^2; a larger accelerometer bias estimate is a failure");
+  core::writeKey(c, s, "min_keyframe_features", min_keyframe_features,
+                 "a frame with fewer static features makes no keyframe (its pose is predicted)");
   core::writeKey(c, s, "dynamic_handling", std::string(handlingName(dynamic_handling)),
         "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS); "
         "full: the paper (see nonrigid_factors, rigid_factors)");
@@ -146,10 +152,11 @@ void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& se
     throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
   }
   const auto& w = options_.window;
-  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) ||
+  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) || w.solver_threads < 1 ||
       !(w.pixel_sigma > 0) || !(w.huber_sigmas > 0) || options_.min_pnp_inliers < 4)
     throw core::ConfigError("[" + section + "] in " + cfg.source() +
-                            ": window_size >= 2, max_iterations >= 1, min_pnp_inliers >= 4 and "
+                            ": window_size >= 2, max_iterations >= 1, solver_threads >= 1, "
+                            "min_pnp_inliers >= 4 and "
                             "positive max_solver_time, pixel_sigma, huber_sigmas are required");
   selector_ = KeyframeSelector(options_.keyframes);
 }
@@ -173,7 +180,7 @@ Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocit
       Eigen::Vector3d p, v;
       Eigen::Quaterniond q;
       pre->predict(T.translation(), Eigen::Quaterniond(T.rotation()), window_->latestVelocity(),
-                   window_->latestAccBias(), window_->latestGyroBias(), options_.window.gravity,
+                   window_->latestAccBias(), window_->latestGyroBias(), window_->gravity(),
                    p, q, v);
       Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
       out.linear() = q.toRotationMatrix();
@@ -201,6 +208,10 @@ bool EstimatorStage::plausibleStep(const Eigen::Isometry3d& step) const {
 
 void EstimatorStage::tryImuInitialization(double t) {
   if (!imu_ || window_->usesImu() || int(window_->size()) < options_.window.window_size) return;
+  // The alignment trusts the visual poses: not while the window holds keyframes that saw too
+  // little (black or featureless frames, whose poses are only predictions).
+  for (const std::size_t n : window_features_)
+    if (int(n) < options_.keyframes.min_shared) return;
   std::vector<ImuInitKeyframe> keyframes;
   std::vector<ImuPreintegration*> preintegrations;
   if (!window_->imuInitInput(keyframes, preintegrations)) return;
@@ -215,11 +226,6 @@ void EstimatorStage::tryImuInitialization(double t) {
   }
   window_->switchToImu(init);
   imu_initialized_at_ = t - first_t_;
-  // The motion history is in the old world frame: rotate it with the window.
-  Eigen::Isometry3d R = Eigen::Isometry3d::Identity();
-  R.linear() = init.R_gravity_world;
-  if (last_body_) last_body_ = R * *last_body_;
-  if (previous_body_) previous_body_ = R * *previous_body_;
   MRPT_LOG_INFO_STREAM("IMU initialized at t = " << imu_initialized_at_ << " s: gyro bias "
                                                   << init.gyro_bias.transpose() << " rad/s, "
                                                   << "alignment residual " << init.position_rms
@@ -267,7 +273,11 @@ void EstimatorStage::process(core::Frame& frame) {
   }
 
   if (!T_wb.matrix().allFinite()) T_wb = last_body_ ? *last_body_ : Eigen::Isometry3d::Identity();
-  if (selector_.decide(frame.t, pixels) != KeyframeSelector::Reason::NotKeyframe) {
+  // A frame that sees almost nothing (black, blurred, a wall) makes no keyframe: its pose is
+  // the prediction, and the window waits for frames it can constrain.
+  const bool seesEnough = window_->empty() || int(observations.size()) >= options_.min_keyframe_features;
+  if (!seesEnough) ++blind_frames_;
+  if (seesEnough && selector_.decide(frame.t, pixels) != KeyframeSelector::Reason::NotKeyframe) {
     KeyframeInput in;
     in.t = frame.t;
     in.T_world_body = T_wb;
@@ -316,6 +326,7 @@ void EstimatorStage::process(core::Frame& frame) {
       MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed (" << report.message
                                      << "), window restarted");
       startWindow(frame);
+      window_features_.assign(1, in.features.size());
       in.T_world_body = T_wb;
       in.preintegration = nullptr;
       window_->addKeyframe(in);
@@ -346,7 +357,9 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
           {"resets", double(resets_)},
           {"imu_initialized_at", imu_initialized_at_},
           {"imu_init_attempts", double(imu_init_attempts_)},
-          {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0}};
+          {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0},
+          {"imu_gaps", imu_ ? double(imu_->gaps()) : 0.0},
+          {"blind_frames", double(blind_frames_)}};
 }
 
 }  // namespace dynslam::estimator

@@ -15,7 +15,11 @@ void KeyframeImu::addSamples(const std::vector<core::ImuSample>& samples, std::s
       throw std::runtime_error("IMU sample at t = " + std::to_string(s.t) + " before frame " +
                                std::to_string(frame) + " does not come after the previous one (" +
                                std::to_string(last_->t) + ")");
-    if (current_) current_->push(s.t - current_end_, s.acc, s.gyro);
+    if (last_ && s.t - last_->t > max_gap_) {
+      broken_ = true;
+      ++gaps_;
+    }
+    if (current_ && !broken_) current_->push(s.t - current_end_, s.acc, s.gyro);
     current_end_ = s.t;
     last_ = Sample{s.t, s.acc, s.gyro};
   }
@@ -24,15 +28,16 @@ void KeyframeImu::addSamples(const std::vector<core::ImuSample>& samples, std::s
 std::shared_ptr<ImuPreintegration> KeyframeImu::cutAt(double t, const Eigen::Vector3d& ba,
                                                       const Eigen::Vector3d& bg) {
   if (!last_) return nullptr;
-  std::shared_ptr<ImuPreintegration> done = current_;
+  std::shared_ptr<ImuPreintegration> done = broken_ ? nullptr : current_;
   if (done && t > current_end_) done->push(t - current_end_, last_->acc, last_->gyr);
+  broken_ = false;
   current_ = std::make_shared<ImuPreintegration>(last_->acc, last_->gyr, ba, bg, noise_);
   current_end_ = t;
   return done;
 }
 
 std::shared_ptr<ImuPreintegration> KeyframeImu::peekAt(double t) const {
-  if (!current_) return nullptr;
+  if (!current_ || broken_) return nullptr;
   auto copy = std::make_shared<ImuPreintegration>(*current_);
   if (t > current_end_) copy->push(t - current_end_, last_->acc, last_->gyr);
   return copy;

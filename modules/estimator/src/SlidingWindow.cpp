@@ -159,8 +159,6 @@ SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
   for (int i = 0; i < 3; ++i) k.speed_bias[i] = input.velocity(i);
   for (int i = 3; i < 9; ++i) k.speed_bias[i] = keyframes_.empty() ? 0.0 : keyframes_.back().speed_bias[i];
   k.preintegration = keyframes_.empty() ? nullptr : input.preintegration;
-  if (params_.use_imu && !keyframes_.empty() && !k.preintegration)
-    throw std::invalid_argument("SlidingWindow: IMU mode needs the preintegration between keyframes");
   keyframes_.push_back(k);
   for (const auto& f : input.features)
     landmarks_.observe(f.id, k.id, {f.pixel, f.depth}, 3.0);
@@ -230,7 +228,7 @@ SolveReport SlidingWindow::solve() {
   solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   solver.max_num_iterations = params_.max_iterations;
   solver.max_solver_time_in_seconds = params_.max_solver_time_s;
-  solver.num_threads = 2;
+  solver.num_threads = params_.solver_threads;
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
   report.iterations = int(summary.iterations.size());
@@ -297,18 +295,15 @@ bool SlidingWindow::imuInitInput(std::vector<ImuInitKeyframe>& keyframes,
 void SlidingWindow::switchToImu(const ImuInitialization& init) {
   if (init.velocities_world.size() != keyframes_.size())
     throw std::invalid_argument("SlidingWindow::switchToImu: one velocity per keyframe needed");
-  Eigen::Isometry3d R_gw = Eigen::Isometry3d::Identity();
-  R_gw.linear() = init.R_gravity_world;
   for (size_t k = 0; k < keyframes_.size(); ++k) {
     Keyframe& kf = keyframes_[k];
-    poseToBlock(R_gw * poseFromBlock(kf.pose), kf.pose);
-    const Eigen::Vector3d v = init.R_gravity_world * init.velocities_world[k];
     for (int i = 0; i < 3; ++i) {
-      kf.speed_bias[i] = v(i);
+      kf.speed_bias[i] = init.velocities_world[k](i);
       kf.speed_bias[3 + i] = 0.0;
       kf.speed_bias[6 + i] = init.gyro_bias(i);
     }
   }
+  params_.gravity = init.gravity_world;
   prior_ = {};
   params_.use_imu = true;
 }

@@ -31,6 +31,7 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,6 +56,7 @@ struct EstimatorOptions : mrpt::config::CLoadableOptions {
   double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
   /// Failure detection: estimates beyond these restart the window (m/s, rad/s, m/s^2).
   double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
+  int min_keyframe_features = 15;  ///< fewer static features: no keyframe, the pose is predicted
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -70,7 +72,8 @@ class EstimatorStage : public core::Stage {
   void finish() override;
   bool estimatesPose() const override { return true; }
   /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets, imu_initialized_at (s
-  /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D).
+  /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D), imu_gaps, blind_frames (too few features
+  /// for a keyframe).
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
@@ -88,11 +91,12 @@ class EstimatorStage : public core::Stage {
   std::unique_ptr<SlidingWindow> window_;
   std::unique_ptr<KeyframeImu> imu_;
   ObjectTrajectories objects_;
+  std::deque<std::size_t> window_features_;  // static features given to each window keyframe
   KeyframeSelector selector_;
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
   std::vector<double> solve_ms_;
   std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
-  std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0;
+  std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0, blind_frames_ = 0;
   double first_t_ = 0, imu_initialized_at_ = -1;
   std::string last_init_failure_;
 };

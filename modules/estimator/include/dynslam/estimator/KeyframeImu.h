@@ -4,6 +4,9 @@
 // between two samples, so the last sample is held up to it (zero-order hold over at most one
 // IMU period), and the next preintegration starts from that same held sample at the keyframe's
 // time. Preintegrations therefore cover exactly the interval between keyframe stamps.
+// A gap in the samples longer than max_gap (a dropped IMU stream) breaks the current
+// preintegration: integrating across it would pretend to know the motion. The keyframe pair it
+// spans then gets no IMU factor (cutAt returns null), and predictions fall back to vision.
 #include <dynslam/core/Frame.h>
 #include <dynslam/estimator/imu/ImuPreintegration.h>
 
@@ -14,7 +17,8 @@ namespace dynslam::estimator {
 
 class KeyframeImu {
  public:
-  explicit KeyframeImu(const ImuNoise& noise) : noise_(noise) {}
+  explicit KeyframeImu(const ImuNoise& noise, double max_gap = 0.05)
+      : noise_(noise), max_gap_(max_gap) {}
 
   /// Adds one frame's samples (those with gyro and accelerometer). Throws std::runtime_error
   /// naming the frame and the sample for a non-finite value or a time that does not increase.
@@ -22,13 +26,16 @@ class KeyframeImu {
 
   /// True once a sample has been seen.
   bool hasSamples() const { return last_.has_value(); }
+  /// Gaps longer than max_gap seen so far.
+  std::size_t gaps() const { return gaps_; }
 
-  /// Ends the current preintegration at time t (null if none had started: the first keyframe)
-  /// and starts the next one there, linearised at the biases (ba, bg).
+  /// Ends the current preintegration at time t (null if none had started, the first keyframe,
+  /// or if a gap broke it) and starts the next one there, linearised at the biases (ba, bg).
   std::shared_ptr<ImuPreintegration> cutAt(double t, const Eigen::Vector3d& ba,
                                            const Eigen::Vector3d& bg);
 
-  /// The current preintegration extended to time t (a copy; null before the first keyframe).
+  /// The current preintegration extended to time t (a copy; null before the first keyframe or
+  /// when a gap broke it).
   std::shared_ptr<ImuPreintegration> peekAt(double t) const;
 
  private:
@@ -37,6 +44,9 @@ class KeyframeImu {
     Eigen::Vector3d acc, gyr;
   };
   ImuNoise noise_;
+  double max_gap_;
+  bool broken_ = false;  // the current preintegration spans a gap in the samples
+  std::size_t gaps_ = 0;
   std::optional<Sample> last_;
   std::shared_ptr<ImuPreintegration> current_;
   double current_end_ = 0;  // time of the last sample pushed into current_

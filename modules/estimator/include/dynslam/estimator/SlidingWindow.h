@@ -34,6 +34,10 @@ struct SlidingWindowParams {
   int window_size = 10;            ///< keyframes in the window
   int max_iterations = 6;          ///< Ceres iterations per keyframe (7-Scenes: 10 gave the same APE, 1.7x the time)
   double max_solver_time_s = 0.05; ///< Ceres wall-time limit per keyframe
+  /// Ceres threads. 1 keeps runs repeatable: with 2 the Schur sums' order varies, and the tiny
+  /// differences change later keyframe and restart decisions (two runs of the same faulted
+  /// rawlog jumped 0.05 m and 0.28 m).
+  int solver_threads = 1;
   double pixel_sigma = 1.0;        ///< px, reprojection noise
   double huber_sigmas = 2.0;       ///< Huber threshold on whitened reprojection residuals
   DepthNoiseModel depth_noise;
@@ -59,7 +63,8 @@ struct KeyframeInput {
   /// Features on dynamic non-rigid objects (method.md r_D): each a world point moving at
   /// constant velocity over the window; new ones need a measured depth.
   std::vector<FeatureObservation> nonrigid_features;
-  /// IMU mode: the preintegration from the previous keyframe to this one (null for the first).
+  /// IMU mode: the preintegration from the previous keyframe to this one (null for the first,
+  /// and where the IMU stream had a gap: that pair is then linked by vision alone).
   std::shared_ptr<ImuPreintegration> preintegration;
 };
 
@@ -96,11 +101,15 @@ class SlidingWindow {
                     std::vector<ImuPreintegration*>& preintegrations) const;
 
   /// Turns a window built from RGB-D alone into a visual-inertial one with the initializer's
-  /// result: the world is rotated so gravity points along -z, velocities and the gyro bias set,
-  /// the IMU factors replace the motion prior. The marginalisation prior (made without the IMU,
-  /// in the old world frame) is dropped; the first keyframe then holds the gauge again.
+  /// result: velocities and the gyro bias set, gravity taken as the initializer found it in
+  /// this world (the world frame is not rotated: the trajectory written so far stays valid,
+  /// also after a restart far from the origin), the IMU factors replace the motion prior. The
+  /// marginalisation prior (made without the IMU) is dropped; the first keyframe then holds the
+  /// gauge again.
   void switchToImu(const ImuInitialization& init);
   bool usesImu() const { return params_.use_imu; }
+  /// The world gravity vector the IMU factors use.
+  const Eigen::Vector3d& gravity() const { return params_.gravity; }
 
   /// The world velocity of non-rigid feature `id` when the window estimates it (seen in two
   /// keyframes or more), else nothing.
