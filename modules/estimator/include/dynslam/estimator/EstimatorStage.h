@@ -17,8 +17,9 @@
 // Sensors: RGB-D, and the IMU when the frames carry gyro + accelerometer samples and use_imu is
 // on. The window starts from RGB-D alone (a constant-motion prior ties consecutive keyframes,
 // world = the first frame's IMU frame); once it is full, the IMU initialization (ImuInitializer)
-// is tried at every keyframe until it succeeds, and the window turns visual-inertial (world
-// rotated to gravity along -z, IMU factors, frames between keyframes predicted by the IMU). The
+// is tried at every keyframe until it succeeds (and only while every keyframe of the window saw
+// enough), and the window turns visual-inertial (gravity as found in the unchanged world, IMU
+// factors, frames between keyframes predicted by the IMU). The
 // estimator's body frame is the IMU's; its camera extrinsic is T_imu_camera =
 // T_body_imu^-1 T_body_camera from the rawlog's sensor poses. Without an IMU (e.g. 7-Scenes,
 // TUM's accelerometer-only IMU) it stays RGB-D only.
