@@ -214,3 +214,29 @@ TEST(DynslamSim, AugmentedSevenScenesPieceThroughTheProgram) {
   const std::string objects = readTextFile(out + "/run/objects.txt");
   EXPECT_NE(objects.find(" person "), std::string::npos);
 }
+
+TEST(DynslamSim, InjectedFaultsReachTheRawlogAndBadValuesAreUsageErrors) {
+  const std::string out = dynslam::testing::scratchDir("faults");
+  // 1 s: IMU samples from 0.3 s for 0.2 s dropped (40 of 201), frames 5-7 black, 10-11 no depth.
+  simulate(out, "--imu-gap 0.3:0.2 --black-frames 5:3 --no-depth 10:2");
+  dynslam::io::RawlogSource source(out + "/sim.rawlog");
+  dynslam::io::SensorSync sync;
+  std::vector<dynslam::core::Frame> frames;
+  while (auto obs = source.next()) sync.push(obs, frames);
+  sync.flush(frames);
+  ASSERT_EQ(frames.size(), 31u);
+  size_t imu = 0;
+  for (const auto& f : frames) {
+    imu += f.imu.size();
+    const bool black = f.index >= 5 && f.index < 8, noDepth = f.index >= 10 && f.index < 12;
+    EXPECT_EQ(cv::countNonZero(f.rgb.reshape(1)) == 0, black) << "frame " << f.index;
+    EXPECT_EQ(cv::countNonZero(f.depth) == 0, noDepth) << "frame " << f.index;
+  }
+  EXPECT_EQ(imu, 201u - 40u) << "0.2 s of 200 Hz samples dropped";
+
+  const std::string ini = dynslam::testing::sourceDir() + "/params/sim/static.ini";
+  const auto r = runCommand(program("dynslam-sim") + " --config " + shellQuoted(ini) + " --out " +
+                            shellQuoted(out + "/bad") + " --imu-gap 3 --quiet");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--imu-gap '3'"), std::string::npos) << r.output;
+}
