@@ -37,6 +37,16 @@ std::string simulate(const std::string& out, const std::string& extra = "",
   return r.output;
 }
 
+/// Every frame the pipeline would see in `rawlog`.
+std::vector<dynslam::core::Frame> framesOf(const std::string& rawlog) {
+  dynslam::io::RawlogSource source(rawlog);
+  dynslam::io::SensorSync sync;
+  std::vector<dynslam::core::Frame> frames;
+  while (auto obs = source.next()) sync.push(obs, frames);
+  sync.flush(frames);
+  return frames;
+}
+
 size_t countLines(const std::string& text, bool skipComments) {
   std::istringstream in(text);
   size_t n = 0;
@@ -125,11 +135,7 @@ TEST(DynslamSim, RawlogCarriesTheSensorExtrinsics) {
   options.load(cfg);
   const Eigen::Isometry3d expected = dynslam::sim::cameraInBody(options.camera);
 
-  dynslam::io::RawlogSource source(out + "/sim.rawlog");
-  dynslam::io::SensorSync sync;
-  std::vector<dynslam::core::Frame> frames;
-  while (auto obs = source.next()) sync.push(obs, frames);
-  sync.flush(frames);
+  const std::vector<dynslam::core::Frame> frames = framesOf(out + "/sim.rawlog");
   ASSERT_EQ(frames.size(), 7u);
   for (const auto& f : frames) {
     EXPECT_TRUE(f.T_body_camera.isApprox(expected, 1e-9)) << "frame " << f.index << "\n"
@@ -219,11 +225,7 @@ TEST(DynslamSim, InjectedFaultsReachTheRawlogAndBadValuesAreUsageErrors) {
   const std::string out = dynslam::testing::scratchDir("faults");
   // 1 s: IMU samples from 0.3 s for 0.2 s dropped (40 of 201), frames 5-7 black, 10-11 no depth.
   simulate(out, "--imu-gap 0.3:0.2 --black-frames 5:3 --no-depth 10:2");
-  dynslam::io::RawlogSource source(out + "/sim.rawlog");
-  dynslam::io::SensorSync sync;
-  std::vector<dynslam::core::Frame> frames;
-  while (auto obs = source.next()) sync.push(obs, frames);
-  sync.flush(frames);
+  const std::vector<dynslam::core::Frame> frames = framesOf(out + "/sim.rawlog");
   ASSERT_EQ(frames.size(), 31u);
   size_t imu = 0;
   for (const auto& f : frames) {
