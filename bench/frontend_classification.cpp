@@ -19,14 +19,15 @@
 #include "classification_klt_standin.h"
 #include "classification_scoring.h"
 
-#include <runner/BuiltinStages.h>
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
+#include <dynslam/core/Median.h>
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/frontend/DynamicClassificationStage.h>
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
+#include <runner/BuiltinStages.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/imgcodecs.hpp>
@@ -55,12 +56,6 @@ struct StageSlot {
   std::unique_ptr<core::Stage> stage;  ///< null: the KLT stand-in
   std::vector<double> ms;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 /// Masks of ground-truth detections replaced by the object's true pixels.
 void useTrueMasks(core::Frame& frame, const cv::Mat& labels) {
@@ -217,8 +212,9 @@ void run(const Settings& s) {
               trackLength.size(), trackLength.empty() ? 0 : lengthSum / trackLength.size());
   if (objects) {
     std::printf("camera motion  median error %.3f deg, %.1f mm per frame (p90 %.3f deg, %.1f mm)\n",
-                median(cameraRotErr), 1000 * median(cameraTransErr),
-                percentile(cameraRotErr, 0.9), 1000 * percentile(cameraTransErr, 0.9));
+                dynslam::core::upperMedian(cameraRotErr),
+                1000 * dynslam::core::upperMedian(cameraTransErr), percentile(cameraRotErr, 0.9),
+                1000 * percentile(cameraTransErr, 0.9));
     std::printf("dynamic class  TP %zu  FP %zu (%zu background, %zu on non-moving objects)  FN %zu "
                 "(%zu on no object, %zu on objects judged static)  TN %zu\n",
                 score.tp, score.fp, score.fpBackground, score.fpNonMovingObject, score.fn,
@@ -242,10 +238,11 @@ void run(const Settings& s) {
     for (const auto& [category, errs] : score.rotErrDeg) {
       const auto target = targets.count(category) ? targets.at(category) : std::make_pair(2.0, 0.02);
       std::printf("rigid sets on moving %ss: %zu set-frames\n", category.c_str(), errs.size());
-      printRatio(("  median rotation error, " + category).c_str(), median(errs), target.first,
-                 false, " deg");
+      printRatio(("  median rotation error, " + category).c_str(), dynslam::core::upperMedian(errs),
+                 target.first, false, " deg");
       printRatio(("  median translation error, " + category).c_str(),
-                 median(score.transErrM.at(category)), target.second, false, " m");
+                 dynslam::core::upperMedian(score.transErrM.at(category)), target.second, false,
+                 " m");
     }
     std::printf("rigid sets not on a moving object: %zu\n", score.rigidSetsUnmatched);
   } else {
@@ -257,7 +254,7 @@ void run(const Settings& s) {
                 objectFeatures ? double(staticObjectFeatures) / objectFeatures : 0);
   }
   for (const auto& slot : stages) {
-    const double m = median(slot.ms);
+    const double m = dynslam::core::upperMedian(slot.ms);
     if (slot.name.rfind("DynamicClassification", 0) == 0)
       printRatio("classification + rigid sets, median per frame", m, 1.0, false, " ms");
     else

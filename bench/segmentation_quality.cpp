@@ -18,6 +18,7 @@
 
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
+#include <dynslam/core/Median.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/sim/Simulator.h>
@@ -39,11 +40,6 @@ using namespace dynslam;
 
 double mean(const std::vector<double>& v) {
   return v.empty() ? 0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
-}
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 double fractionBelow(const std::vector<double>& v, double bound) {
   return v.empty()
@@ -70,7 +66,8 @@ void printTable(const Scores& s) {
   std::printf(
       "  mask IoU, people >= 50 %% visible (%zu): mean %.3f, median %.3f  [target >= 0.80:"
       " ratio %.2f, %s]\n",
-      s.iou.size(), iou, median(s.iou), iou / 0.80, iou >= 0.80 ? "met" : "MISSED");
+      s.iou.size(), iou, dynslam::core::upperMedian(s.iou), iou / 0.80,
+      iou >= 0.80 ? "met" : "MISSED");
   std::printf("    precision %.3f, recall %.3f (means); box as mask: IoU %.3f\n", mean(s.precision),
               mean(s.recall), mean(s.boxIoU));
   std::printf("    where d_t is within 5 %% of the truth (%zu of %zu): mean IoU %.3f\n",
@@ -84,8 +81,9 @@ void printTable(const Scores& s) {
     const bool targeted = c != None;
     const double n = std::max<size_t>(1, e.size());
     std::printf("    %-22s (%4zu)  %6.2f  %6.2f  %3.0f%%  %4.0f%%   %4.0f%%     %6.2f      %s\n",
-                kOcclusionName[c], e.size(), mean(e), median(e), 100 * fractionBelow(e, 5.0),
-                100 * s.behind[c] / n, 100 * s.inFront[c] / n, mean(s.torsoErr[c]),
+                kOcclusionName[c], e.size(), mean(e), dynslam::core::upperMedian(e),
+                100 * fractionBelow(e, 5.0), 100 * s.behind[c] / n, 100 * s.inFront[c] / n,
+                mean(s.torsoErr[c]),
                 !targeted        ? "-"
                 : mean(e) <= 5.0 ? "mean <= 5 %: met"
                                  : "mean <= 5 %: MISSED");
@@ -98,11 +96,12 @@ void printTable(const Scores& s) {
   std::vector<double> three;
   for (size_t i = 0; i < s.ms.size(); ++i)
     if (s.objects[i] == 3) three.push_back(s.ms[i]);
-  const double t = median(s.ms);
+  const double t = dynslam::core::upperMedian(s.ms);
   std::printf(
       "  time per frame: median %.3f ms (%.1f objects/frame on average), median %.3f ms "
       "over the %zu frames with 3 objects  [target <= 1.2 ms: ratio %.2f, %s]\n",
-      t, mean(s.objects), median(three), three.size(), t / 1.2, t <= 1.2 ? "met" : "MISSED");
+      t, mean(s.objects), dynslam::core::upperMedian(three), three.size(), t / 1.2,
+      t <= 1.2 ? "met" : "MISSED");
 }
 
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,

@@ -1,5 +1,6 @@
 #include "tracking_video.h"
 
+#include <dynslam/core/Median.h>
 #include <dynslam/detection/OnnxYoloDetector.h>
 #include <dynslam/viz/AnnotatedFrame.h>
 
@@ -23,12 +24,6 @@ struct TrackLife {
   int matched = 0;            // frames matched while confirmed
   cv::Rect2f first_box, last_box;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace
 
@@ -108,11 +103,13 @@ void benchVideo(const VideoBenchSettings& s) {
   std::printf("video           %s, %d frames %dx%d at %.1f Hz\n", s.video.c_str(), frames,
               image.width, image.height, fps);
   std::printf("detector        YOLOX-nano (%s), %.2f detections per frame, median %.1f ms\n",
-              s.model.c_str(), frames ? double(detections) / frames : 0.0, median(detectMs));
+              s.model.c_str(), frames ? double(detections) / frames : 0.0,
+              dynslam::core::upperMedian(detectMs));
   std::printf(
       "tracker         rho_min %.2f (no depth: plain IoU), max_age %d, min_hits %d; "
       "median %.4f ms per frame\n",
-      s.tracker.rho_min, s.tracker.max_age, s.tracker.min_hits, median(trackMs));
+      s.tracker.rho_min, s.tracker.max_age, s.tracker.min_hits,
+      dynslam::core::upperMedian(trackMs));
   std::printf(
       "tracks          %zu confirmed, mean length %.1f frames (%.1f s), %zu started "
       "at the image border\n",

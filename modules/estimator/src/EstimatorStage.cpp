@@ -2,6 +2,7 @@
 
 #include "dynslam/estimator/FramePoseTracker.h"
 
+#include <dynslam/core/Median.h>
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <algorithm>
@@ -26,12 +27,6 @@ Eigen::Isometry3d rigid(const Eigen::Isometry3d& T) {
   out.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
   out.translation() = T.translation();
   return out;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace
@@ -341,18 +336,20 @@ void EstimatorStage::process(core::Frame& frame) {
 }
 
 void EstimatorStage::finish() {
-  MRPT_LOG_INFO_STREAM(frames_ << " frames, " << keyframes_ << " keyframes, solve median "
-                               << median(solve_ms_) << " ms, " << pnp_failures_
-                               << " frames without a PnP pose, " << resets_ << " restarts; IMU "
-                               << (imu_initialized_at_ >= 0
-                                       ? "initialized at " + std::to_string(imu_initialized_at_) + " s"
-                                       : std::string(imu_ ? "never initialized" : "not used")));
+  MRPT_LOG_INFO_STREAM(
+      frames_ << " frames, " << keyframes_ << " keyframes, solve median "
+              << core::upperMedian(solve_ms_) << " ms, " << pnp_failures_
+              << " frames without a PnP pose, " << resets_ << " restarts; IMU "
+              << (imu_initialized_at_ >= 0
+                      ? "initialized at " + std::to_string(imu_initialized_at_) + " s"
+                      : std::string(imu_ ? "never initialized" : "not used")));
 }
 
 std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
   return {{"keyframes", double(keyframes_)},
-          {"solve_ms_median", median(solve_ms_)},
-          {"solve_ms_max", solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
+          {"solve_ms_median", core::upperMedian(solve_ms_)},
+          {"solve_ms_max",
+           solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
           {"pnp_failures", double(pnp_failures_)},
           {"resets", double(resets_)},
           {"imu_initialized_at", imu_initialized_at_},

@@ -4,6 +4,7 @@
 // between them is preintegrated with zero bias. The initializer must find the ground truth's
 // gyro bias (median within 0.002 rad/s) and the gravity direction (median within 1 deg; the
 // test says why not every window). One window every second over the IMU file's 40 s.
+#include <dynslam/core/Median.h>
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/StateBlocks.h>
 #include "EurocCsv.h"
@@ -33,11 +34,6 @@ struct WindowResult {
   bool accepted;
   double bias_error, gravity_deg, velocity_error;  // rad/s, deg, m/s (worst keyframe)
 };
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
 
 /// Runs the initializer on one window every second; with removeTrueAccBias the preintegrations
 /// are linearised at the ground truth's accelerometer bias (which the initializer does not
@@ -149,16 +145,17 @@ TEST(EurocImuInitializer, FindsGyroBiasAndGravityDirection) {
     const double worstGravity = *std::max_element(gravity.begin(), gravity.end());
     std::cout << (removeTrueAccBias ? "true accelerometer bias removed: " : "zero bias: ")
               << bias.size() << " of " << results.size()
-              << " windows accepted; gyro bias error median " << median(bias) << ", worst "
-              << worstBias << " rad/s; gravity direction error median " << median(gravity)
-              << ", worst " << worstGravity << " deg; worst-keyframe velocity error median "
-              << median(velocity) << " m/s\n";
-    EXPECT_LT(median(bias), 0.002);
+              << " windows accepted; gyro bias error median " << dynslam::core::upperMedian(bias)
+              << ", worst " << worstBias << " rad/s; gravity direction error median "
+              << dynslam::core::upperMedian(gravity) << ", worst " << worstGravity
+              << " deg; worst-keyframe velocity error median "
+              << dynslam::core::upperMedian(velocity) << " m/s\n";
+    EXPECT_LT(dynslam::core::upperMedian(bias), 0.002);
     EXPECT_LT(worstBias, 0.004);
     if (removeTrueAccBias) {
       EXPECT_LT(worstGravity, 0.5);
     } else {
-      EXPECT_LT(median(gravity), 1.0);
+      EXPECT_LT(dynslam::core::upperMedian(gravity), 1.0);
       EXPECT_LT(worstGravity, 1.5);
     }
   }

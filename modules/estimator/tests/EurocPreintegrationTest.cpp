@@ -2,6 +2,7 @@
 // truth's states and biases. Between ground-truth states 0.5 s apart, preintegrating the raw
 // samples with the ground-truth biases must predict the relative pose within 1 cm and 0.1 deg
 // (median over the file).
+#include <dynslam/core/Median.h>
 #include <dynslam/estimator/imu/ImuPreintegration.h>
 #include "EurocCsv.h"
 
@@ -16,16 +17,6 @@
 
 using namespace dynslam::estimator;
 using namespace dynslam::estimator::testing;
-
-namespace {
-
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-}  // namespace
 
 TEST(EurocPreintegration, PredictsHalfSecondRelativePosesWithinOneCentimetreAndATenthDegree) {
   const std::string dir = dynslam::testing::sharedPath("data/euroc_v102_imu");
@@ -70,7 +61,8 @@ TEST(EurocPreintegration, PredictsHalfSecondRelativePosesWithinOneCentimetreAndA
     lastStart = ti;
   }
   ASSERT_GT(positionErrors.size(), 50u) << "windows found in the file";
-  const double pMed = median(positionErrors), rMed = median(rotationErrorsDeg);
+  const double pMed = dynslam::core::upperMedian(positionErrors),
+               rMed = dynslam::core::upperMedian(rotationErrorsDeg);
   std::cout << positionErrors.size() << " windows of 0.5 s: median position error " << 100 * pMed
             << " cm, median rotation error " << rMed << " deg\n";
   EXPECT_LT(pMed, 0.01);

@@ -1,18 +1,9 @@
 #include "dynslam/frontend/CameraMotion.h"
 
+#include <dynslam/core/Median.h>
 #include <algorithm>
 
 namespace dynslam::frontend {
-namespace {
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
-
-}  // namespace
-
 std::optional<Eigen::Matrix3d> gyroCameraRotation(const std::vector<core::ImuSample>& imu,
                                                   double t_prev, double t_cur,
                                                   const Eigen::Isometry3d& T_body_imu,
@@ -79,7 +70,7 @@ std::optional<RegistrationResult> CameraMotionEstimator::translationWithRotation
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<double> c(d.size());
     for (size_t i = 0; i < d.size(); ++i) c[i] = d[i](axis);
-    med(axis) = median(std::move(c));
+    med(axis) = core::upperMedian(std::move(c));
   }
   if (auto in = inliersOfT(med); support(in) > support(best)) best = std::move(in);
   std::uniform_int_distribution<size_t> pick(0, d.size() - 1);

@@ -3,17 +3,12 @@
 #include "dynslam/frontend/ObjectMembership.h"
 #include "dynslam/frontend/SceneFlow.h"
 
+#include <dynslam/core/Median.h>
 #include <algorithm>
 #include <set>
 
 namespace dynslam::frontend {
 namespace {
-
-double median(std::vector<double>& v) {
-  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 /// The object's speed from its features' scene-flow velocities (m/s each).
 double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatistic statistic) {
@@ -26,7 +21,7 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
   std::vector<double> c(velocities.size());
   for (int axis = 0; axis < 3; ++axis) {
     for (size_t i = 0; i < velocities.size(); ++i) c[i] = velocities[i](axis);
-    m(axis) = median(c);
+    m(axis) = core::upperMedianInPlace(c);
   }
   return m.norm();
 }
@@ -47,11 +42,11 @@ float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, std:
   const float centre = (x0 >= 0 && y0 >= 0 && x0 < depth.cols && y0 < depth.rows)
                            ? depth.at<float>(y0, x0)
                            : 0.f;
-  const double m0 = centre > 0 ? double(centre) : median(buf);
+  const double m0 = centre > 0 ? double(centre) : core::upperMedianInPlace(buf);
   const double band = std::max(0.05, 0.02 * m0);
   buf.erase(std::remove_if(buf.begin(), buf.end(), [&](double z) { return std::abs(z - m0) > band; }),
             buf.end());
-  return float(median(buf));
+  return float(core::upperMedianInPlace(buf));
 }
 
 }  // namespace

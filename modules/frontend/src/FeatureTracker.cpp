@@ -3,6 +3,7 @@
 #include "dynslam/frontend/CameraMotion.h"
 #include "dynslam/frontend/FlowPrediction.h"
 
+#include <dynslam/core/Median.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
@@ -82,13 +83,6 @@ class ScopedMs {
   double& ms_;
   std::chrono::steady_clock::time_point start_;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 }  // namespace
 
@@ -249,8 +243,8 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
     rejectByFundamental(frame, survivorsPrevious, survivors);
   }
   tracks_ = std::move(survivors);
-  stats_.median_klt_residual = median(residuals);
-  stats_.median_init_offset_px = median(offsets);
+  stats_.median_klt_residual = core::upperMedian(residuals);
+  stats_.median_init_offset_px = core::upperMedian(offsets);
 
   if (!tracks_.empty()) {
     std::vector<double> vx, vy;
@@ -258,7 +252,7 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
       vx.push_back(t.velocity.x);
       vy.push_back(t.velocity.y);
     }
-    median_velocity_ = cv::Point2f(float(median(vx)), float(median(vy)));
+    median_velocity_ = cv::Point2f(float(core::upperMedian(vx)), float(core::upperMedian(vy)));
   }
 }
 

@@ -2,6 +2,7 @@
 // depth and per-pixel instance labels.
 #include "SimulatedFrames.h"
 
+#include <dynslam/core/Median.h>
 #include <dynslam/frontend/FeatureTracker.h>
 
 #include <gtest/gtest.h>
@@ -19,12 +20,6 @@ using frontend::testing::scenario;
 using frontend::testing::simulatedFrame;
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return -1;
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
 
 uint16_t labelAt(const sim::SimFrame& truth, const cv::Point2f& p) {
   return truth.image.label.at<uint16_t>(cvRound(p.y), cvRound(p.x));
@@ -109,18 +104,22 @@ TEST(FeatureTrackerSim, GyroInitialFlowBeatsZeroInitialFlowOnAFastRotation) {
   none.flow_init = FlowInit::None;
   const auto a = runTracker(sim, gyro), b = runTracker(sim, none), c = runTracker(sim, motion);
   std::cout << "gyro: lost " << a.lost << " of " << a.incoming << ", init offset "
-            << median(a.init_offsets) << " px, residual " << median(a.residuals) << "\n"
+            << dynslam::core::upperMedian(a.init_offsets) << " px, residual "
+            << dynslam::core::upperMedian(a.residuals) << "\n"
             << "none: lost " << b.lost << " of " << b.incoming << ", init offset "
-            << median(b.init_offsets) << " px, residual " << median(b.residuals) << "\n"
+            << dynslam::core::upperMedian(b.init_offsets) << " px, residual "
+            << dynslam::core::upperMedian(b.residuals) << "\n"
             << "previous motion: lost " << c.lost << " of " << c.incoming << ", init offset "
-            << median(c.init_offsets) << " px, residual " << median(c.residuals) << "\n";
+            << dynslam::core::upperMedian(c.init_offsets) << " px, residual "
+            << dynslam::core::upperMedian(c.residuals) << "\n";
   EXPECT_LT(a.lost, 0.75 * b.lost);
   // The extrinsics chain (IMU -> body -> camera) is right: the prediction is within a few
   // pixels of a ~37 px motion.
-  EXPECT_LT(median(a.init_offsets), 4.0);
-  EXPECT_GT(median(b.init_offsets), 25.0) << "the motion really is fast";
+  EXPECT_LT(dynslam::core::upperMedian(a.init_offsets), 4.0);
+  EXPECT_GT(dynslam::core::upperMedian(b.init_offsets), 25.0) << "the motion really is fast";
   // Constant velocity also helps at a steady rotation rate.
-  EXPECT_LT(median(c.init_offsets), 0.5 * median(b.init_offsets));
+  EXPECT_LT(dynslam::core::upperMedian(c.init_offsets),
+            0.5 * dynslam::core::upperMedian(b.init_offsets));
 }
 
 // Ids: unique in a frame, kept while tracked (track_length + 1 per frame), never reused; new

@@ -10,6 +10,7 @@
 // thresholds and the mask follow the person (bench, full size: IoU 0.72), and with an occluder
 // in front (mild occlusion) d_t is mostly right (bench: median error 6 %).
 #include <dynslam/core/Config.h>
+#include <dynslam/core/Median.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/sim/Simulator.h>
@@ -31,11 +32,6 @@ sim::ScenarioOptions quarterResolution(const std::string& ini) {
       ini, {"Scenario.width=320", "Scenario.height=240", "Scenario.fx=262.5", "Scenario.fy=262.5",
             "Scenario.cx=159.5", "Scenario.cy=119.5"}));
   return o;
-}
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace
@@ -83,7 +79,8 @@ TEST(SegmentationSim, OnceTheDepthIsRightTheMaskFollowsThePerson) {
   std::printf(
       "[ INFO ] %d people at least half visible; d_t within 5 %% for %zu: their mean "
       "IoU %.3f; %zu mildly occluded: median d_t error %.1f %%\n",
-      scored, iouRightDepth.size(), meanIoU, mildErr.size(), 100 * median(mildErr));
+      scored, iouRightDepth.size(), meanIoU, mildErr.size(),
+      100 * dynslam::core::upperMedian(mildErr));
   EXPECT_GE(meanIoU, 0.65);
-  EXPECT_LE(median(mildErr), 0.10);
+  EXPECT_LE(dynslam::core::upperMedian(mildErr), 0.10);
 }

@@ -1,0 +1,23 @@
+#pragma once
+// The median the stages, benches and tests report: the element at position n/2 of the sorted
+// values (for an even count the upper of the two middle ones), found by a partial sort. One
+// definition, so a figure in summary.json, a bench and a test mean the same thing.
+// (evaluation::computeStatistics keeps evo's averaged median for APE/RPE.)
+#include <algorithm>
+#include <vector>
+
+namespace dynslam::core {
+
+/// The same on `values` itself, which it reorders: for a buffer reused in a hot loop. 0 for no
+/// values.
+inline double upperMedianInPlace(std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
+/// 0 for no values.
+inline double upperMedian(std::vector<double> values) { return upperMedianInPlace(values); }
+
+}  // namespace dynslam::core
