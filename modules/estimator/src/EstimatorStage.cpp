@@ -1,6 +1,7 @@
 #include "dynslam/estimator/EstimatorStage.h"
 
 #include "dynslam/estimator/FramePoseTracker.h"
+#include "dynslam/estimator/StateBlocks.h"
 
 #include <dynslam/core/Median.h>
 #include <mrpt/config/CConfigFileBase.h>
@@ -18,15 +19,6 @@ const char* handlingName(DynamicHandling h) {
     case DynamicHandling::Full: return "full";
   }
   return "remove";
-}
-
-/// The nearest rigid transform: products of many poses drift off SO(3) in floating point, and a
-/// slightly scaled rotation compounds frame after frame through the motion prediction.
-Eigen::Isometry3d rigid(const Eigen::Isometry3d& T) {
-  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-  out.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
-  out.translation() = T.translation();
-  return out;
 }
 
 }  // namespace
@@ -328,7 +320,8 @@ void EstimatorStage::process(core::Frame& frame) {
       selector_.accept(frame.t, pixels);
     }
   }
-  T_wb = rigid(T_wb);
+  // A slightly scaled rotation compounded to inf in 6 frames through the motion prediction.
+  T_wb = nearestRigid(T_wb);
   previous_body_ = last_body_;
   last_body_ = T_wb;
   frame.T_world_camera = T_wb * T_ic;

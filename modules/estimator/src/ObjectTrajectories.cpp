@@ -1,5 +1,7 @@
 #include "dynslam/estimator/ObjectTrajectories.h"
 
+#include "dynslam/estimator/StateBlocks.h"
+
 namespace dynslam::estimator {
 
 void ObjectTrajectories::update(core::Frame& frame) {
@@ -21,10 +23,7 @@ void ObjectTrajectories::update(core::Frame& frame) {
       motion.linear() = set.R;
       motion.translation() = set.t;
       const Eigen::Isometry3d M = T_wc * motion * previous_camera_->inverse();
-      Eigen::Isometry3d L = M * it->second.T_world_object;
-      // Keep the rotation exactly orthonormal over long tracks.
-      L.linear() = Eigen::Quaterniond(L.rotation()).normalized().toRotationMatrix();
-      it->second.T_world_object = L;
+      it->second.T_world_object = nearestRigid(M * it->second.T_world_object);
     }
     it->second.last_frame = frame.index;
     frame.object_poses.push_back({set.object_id, it->second.T_world_object});

@@ -17,6 +17,10 @@
 
 namespace dynslam::estimator {
 
+/// Observations putting a point nearer than this to the camera (m, along the optical axis) are
+/// left out of the problem: the reprojection factors cannot be evaluated there.
+constexpr double kMinLandmarkDepth = 0.05;
+
 using FactorSink = std::function<void(std::shared_ptr<const ceres::CostFunction>,
                                       const ceres::LossFunction*, std::vector<double*>)>;
 
@@ -59,14 +63,12 @@ class SlidingWindow::ProblemBuilder {
     if (p.observations.size() < 2) return 0;
     if (only >= 0 && p.observations.begin()->first != only) return 0;
     const Eigen::Vector3d position(p.position), velocity(p.velocity);
-    const Eigen::Isometry3d T_bc = poseFromBlock(w_.extrinsic_);
     std::vector<std::pair<Keyframe*, const LandmarkObservation*>> seen;
     for (auto& [kf, obs] : p.observations) {
       Keyframe* k = w_.keyframe(kf);
       if (!k) continue;
-      const Eigen::Vector3d inCamera =
-          (poseFromBlock(k->pose) * T_bc).inverse() * (position + (k->t - p.t0) * velocity);
-      if (inCamera.z() >= 0.05) seen.emplace_back(k, &obs);
+      if (w_.depthIn(*k, position + (k->t - p.t0) * velocity) >= kMinLandmarkDepth)
+        seen.emplace_back(k, &obs);
     }
     if (seen.size() < 2) return 0;  // position and velocity need two views
     for (const auto& [k, obs] : seen) {
@@ -91,14 +93,12 @@ class SlidingWindow::ProblemBuilder {
     const bool touchesOnly = only < 0 || only == l.anchor;
     const LandmarkObservation& a = l.anchorObservation();
     const Eigen::Vector3d world = w_.landmarkWorld(l);
-    const Eigen::Isometry3d T_bc = poseFromBlock(w_.extrinsic_);
     int used = 0;
     for (auto& [kf, obs] : l.observations) {
       if (kf == l.anchor) continue;
       Keyframe* k = w_.keyframe(kf);
       if (!k) continue;
-      const Eigen::Vector3d inCamera = (poseFromBlock(k->pose) * T_bc).inverse() * world;
-      if (inCamera.z() < 0.05) continue;
+      if (w_.depthIn(*k, world) < kMinLandmarkDepth) continue;
       ++used;
       if (!touchesOnly && only != kf) continue;
       sink(std::make_shared<StaticReprojectionFactor>(w_.camera_, a.pixel, obs.pixel,
@@ -138,6 +138,10 @@ SlidingWindow::Keyframe* SlidingWindow::keyframe(std::int64_t id) {
 
 const SlidingWindow::Keyframe* SlidingWindow::keyframe(std::int64_t id) const {
   return const_cast<SlidingWindow*>(this)->keyframe(id);
+}
+
+double SlidingWindow::depthIn(const Keyframe& k, const Eigen::Vector3d& world) const {
+  return ((poseFromBlock(k.pose) * poseFromBlock(extrinsic_)).inverse() * world).z();
 }
 
 Eigen::Vector3d SlidingWindow::landmarkWorld(const Landmark& l) const {
@@ -270,8 +274,8 @@ void SlidingWindow::marginalizeOldest() {
   landmarks_.removeKeyframe(oldest.id, [&](const Landmark& l, std::int64_t next) {
     const Eigen::Vector3d world = landmarkWorld(l);
     const Keyframe* k = keyframe(next);
-    const double z = ((poseFromBlock(k->pose) * poseFromBlock(extrinsic_)).inverse() * world).z();
-    return z > 0.05 ? 1.0 / z : 1.0 / 3.0;
+    const double z = depthIn(*k, world);
+    return z > kMinLandmarkDepth ? 1.0 / z : 1.0 / 3.0;
   });
   // Non-rigid points first seen in the oldest keyframe went into the prior with it.
   for (auto it = nonrigid_.begin(); it != nonrigid_.end();)

@@ -23,6 +23,13 @@ void poseToBlock(const Eigen::Isometry3d& pose, double* block) {
   block[6] = q.w();
 }
 
+Eigen::Isometry3d nearestRigid(const Eigen::Isometry3d& T) {
+  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+  out.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
+  out.translation() = T.translation();
+  return out;
+}
+
 Eigen::Quaterniond quaternionExp(const Eigen::Vector3d& theta) {
   const double angle = theta.norm();
   if (angle < 1e-10) {
@@ -37,6 +44,22 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d m;
   m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
   return m;
+}
+
+Eigen::Matrix3d rightJacobianSO3(const Eigen::Vector3d& phi) {
+  const double a = phi.norm();
+  const Eigen::Matrix3d W = skew(phi);
+  if (a < 1e-5) return Eigen::Matrix3d::Identity() - 0.5 * W + W * W / 6.0;
+  return Eigen::Matrix3d::Identity() - (1.0 - std::cos(a)) / (a * a) * W +
+         (a - std::sin(a)) / (a * a * a) * W * W;
+}
+
+Eigen::Matrix3d inverseRightJacobianSO3(const Eigen::Vector3d& phi) {
+  const double a = phi.norm();
+  const Eigen::Matrix3d W = skew(phi);
+  if (a < 1e-5) return Eigen::Matrix3d::Identity() + 0.5 * W + W * W / 12.0;
+  return Eigen::Matrix3d::Identity() + 0.5 * W +
+         (1.0 / (a * a) - (1.0 + std::cos(a)) / (2.0 * a * std::sin(a))) * W * W;
 }
 
 bool PoseManifold::Plus(const double* x, const double* delta, double* x_plus_delta) const {

@@ -7,14 +7,6 @@
 
 namespace dynslam::estimator {
 
-Eigen::Matrix3d inverseRightJacobianSO3(const Eigen::Vector3d& phi) {
-  const double a = phi.norm();
-  const Eigen::Matrix3d W = skew(phi);
-  if (a < 1e-6) return Eigen::Matrix3d::Identity() + 0.5 * W + W * W / 12.0;
-  return Eigen::Matrix3d::Identity() + 0.5 * W +
-         (1.0 / (a * a) - (1.0 + std::cos(a)) / (2.0 * a * std::sin(a))) * W * W;
-}
-
 MarginalizationFactor::MarginalizationFactor(std::vector<PriorBlock> blocks, Eigen::MatrixXd J,
                                              Eigen::VectorXd r0)
     : blocks_(std::move(blocks)), J_(std::move(J)), r0_(std::move(r0)) {

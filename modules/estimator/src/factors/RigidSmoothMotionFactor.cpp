@@ -17,16 +17,6 @@ Eigen::Vector3d logSO3(const Eigen::Matrix3d& R) {
   return 2.0 * std::atan2(n, q.w()) * q.vec() / n;
 }
 
-/// Inverse of the right Jacobian of SO(3): Log(Exp(phi) Exp(d)) ~ phi + Jr^-1(phi) d.
-Eigen::Matrix3d rightJacobianInverseSO3(const Eigen::Vector3d& phi) {
-  const double theta = phi.norm();
-  const Eigen::Matrix3d K = skew(phi);
-  const double c = theta < 1e-5 ? 1.0 / 12.0
-                                : 1.0 / (theta * theta) -
-                                      (1.0 + std::cos(theta)) / (2.0 * theta * std::sin(theta));
-  return Eigen::Matrix3d::Identity() + 0.5 * K + c * K * K;
-}
-
 }  // namespace
 
 RigidSmoothMotionFactor::RigidSmoothMotionFactor(const Matrix6d& information)
@@ -67,7 +57,7 @@ bool RigidSmoothMotionFactor::Evaluate(double const* const* parameters, double* 
   //   d/d_a: Rb^T Ra Exp(d_a) Rb^T Rc = R_E Exp(M^T d_a), M = Rb^T Rc
   //   d/d_b: Rb^T appears twice, each as Exp(-d_b) Rb^T -> -(R_E^T + M^T)
   // and for t_E = Rb^T Ra w + u, w and u depending on Rb^T and the positions.
-  const Eigen::Matrix3d JrInv = rightJacobianInverseSO3(phi);
+  const Eigen::Matrix3d JrInv = inverseRightJacobianSO3(phi);
   const Eigen::Matrix3d MT = Rc.transpose() * Rb;
   const Eigen::Matrix3d RbTRa = RbT * Ra;
   using Jacobian6 = Eigen::Matrix<double, 6, 6>;

@@ -143,6 +143,8 @@ class SlidingWindow {
   SolveReport solve();
   void marginalizeOldest();
   Eigen::Vector3d landmarkWorld(const Landmark& l) const;
+  /// Depth of a world point in keyframe `k`'s camera, at the current estimate.
+  double depthIn(const Keyframe& k, const Eigen::Vector3d& world) const;
   Keyframe* keyframe(std::int64_t id);
   const Keyframe* keyframe(std::int64_t id) const;
 

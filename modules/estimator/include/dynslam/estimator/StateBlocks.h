@@ -32,8 +32,18 @@ constexpr int kSpeedBiasSize = 9;
 Eigen::Isometry3d poseFromBlock(const double* block);
 void poseToBlock(const Eigen::Isometry3d& pose, double* block);
 
+/// The nearest rigid transform (rotation re-orthonormalised through a unit quaternion): products
+/// of many poses drift off SO(3) in floating point, and a slightly scaled rotation compounds
+/// when a pose is carried forward frame after frame.
+Eigen::Isometry3d nearestRigid(const Eigen::Isometry3d& T);
+
 /// SO(3) exponential of a rotation vector (small angles handled).
 Eigen::Quaterniond quaternionExp(const Eigen::Vector3d& theta);
+/// Right Jacobian of SO(3) at phi: Exp(phi + d) ~ Exp(phi) Exp(Jr(phi) d).
+Eigen::Matrix3d rightJacobianSO3(const Eigen::Vector3d& phi);
+/// Its inverse: Log(Exp(phi) Exp(d)) ~ phi + Jr^-1(phi) d.
+Eigen::Matrix3d inverseRightJacobianSO3(const Eigen::Vector3d& phi);
+
 /// Skew-symmetric matrix [v]x.
 Eigen::Matrix3d skew(const Eigen::Vector3d& v);
 

@@ -37,7 +37,4 @@ class MarginalizationFactor : public ceres::CostFunction {
   Eigen::VectorXd r0_;
 };
 
-/// Inverse of the right Jacobian of SO(3) at phi (Log(R0^T R Exp(d)) = phi + Jr^-1(phi) d + ..).
-Eigen::Matrix3d inverseRightJacobianSO3(const Eigen::Vector3d& phi);
-
 }  // namespace dynslam::estimator
