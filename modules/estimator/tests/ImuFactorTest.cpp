@@ -60,7 +60,7 @@ TEST(ImuFactor, ResidualIsZeroAtTheTrueStates) {
 TEST(ImuFactor, AnalyticJacobiansMatchNumericDifferentiation) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
-  const auto randomVector = [&](double scale) {
+  const auto randomVector = [&](double scale) -> Eigen::Vector3d {  // not an expression of a temporary
     return Eigen::Vector3d(u(rng), u(rng), u(rng)) * scale;
   };
   for (int trial = 0; trial < 5; ++trial) {

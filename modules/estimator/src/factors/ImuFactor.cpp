@@ -90,8 +90,11 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals,
     Js.block<3, 3>(kP, 0) = -Ri_T * T;
     Js.block<3, 3>(kP, 3) = -dp_dba;
     Js.block<3, 3>(kP, 6) = -dp_dbg;
-    Js.block<3, 3>(kR, 6) =
-        -quatLeft(q_j.inverse() * q_i * gamma).bottomRightCorner<3, 3>() * dq_dbg;
+    // gamma(bg) = gamma0 Exp(dq_dbg (bg - bg0)): the right Jacobian of that Exp makes the
+    // derivative exact away from the linearisation point (VINS drops it: first order only).
+    const Eigen::Vector3d phi = dq_dbg * (bg_i - pre.linearizedBg());
+    Js.block<3, 3>(kR, 6) = -quatLeft(q_j.inverse() * q_i * gamma).bottomRightCorner<3, 3>() *
+                            rightJacobianSO3(phi) * dq_dbg;
     Js.block<3, 3>(kV, 0) = -Ri_T;
     Js.block<3, 3>(kV, 3) = -dv_dba;
     Js.block<3, 3>(kV, 6) = -dv_dbg;
