@@ -60,7 +60,8 @@ TEST(ImuFactor, ResidualIsZeroAtTheTrueStates) {
 TEST(ImuFactor, AnalyticJacobiansMatchNumericDifferentiation) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
-  const auto randomVector = [&](double scale) -> Eigen::Vector3d {  // not an expression of a temporary
+  // Returns a vector, not an Eigen expression that would refer to a destroyed temporary.
+  const auto randomVector = [&](double scale) -> Eigen::Vector3d {
     return Eigen::Vector3d(u(rng), u(rng), u(rng)) * scale;
   };
   for (int trial = 0; trial < 5; ++trial) {
