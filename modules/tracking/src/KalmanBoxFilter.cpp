@@ -45,4 +45,20 @@ void KalmanBoxFilter::update(const BoxMeasurement& z, const BoxMeasurementCovari
   P_ = 0.5 * (P_ + P_.transpose());  // keep it symmetric against rounding
 }
 
+void KalmanBoxFilter::restartFrom(std::initializer_list<int> components, const BoxMeasurement& z,
+                                  const BoxCovariance& P0) {
+  auto restart = [&](int j) {
+    P_.row(j).setZero();
+    P_.col(j).setZero();
+    P_(j, j) = P0(j, j);
+  };
+  for (int i : components) {
+    x_(i) = z(i);
+    restart(i);
+    if (i == kR) continue;  // the aspect ratio has no rate
+    x_(5 + i) = 0;
+    restart(5 + i);
+  }
+}
+
 }  // namespace dynslam::tracking

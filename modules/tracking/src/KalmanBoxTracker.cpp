@@ -19,11 +19,12 @@ void KalmanBoxTracker::predict(double t) {
     tr.track.detection = -1;
     if (dt <= 0) continue;
     const BoxState& x = tr.filter.state();
-    // While coasting the box keeps its size: over more than a few frames a linear extrapolation
-    // of the area goes badly wrong (people turn round, boxes are clipped at the image border;
-    // a box extrapolated for 1.5 s shrank to 20 x 38 px in bench-tracking), and a shrinking box
-    // is never re-associated. SORT only stops it from turning negative.
+    // While coasting the box keeps its size and depth: over more than a few frames a linear
+    // extrapolation of the area goes badly wrong (people turn round, boxes are clipped at the image
+    // border; a box extrapolated for 1.5 s shrank to 20 x 38 px in bench-tracking), and a shrinking
+    // box is never re-associated. SORT only stops it from turning negative.
     if (tr.track.misses > 0 || x(kS) + dt * x(kRateS) <= 0) tr.filter.stopAreaRate();
+    if (tr.track.misses > 0) tr.filter.stopDepthRate();  // likewise for the depth
     tr.filter.predict(dt, processNoise(params_.noise, tr.filter.state(), dt));
   }
 }
@@ -81,6 +82,7 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
       BoxMeasurement z = boxMeasurement(o.box, o.depth);
       if (!(o.depth > 0)) z(kD) = tr.filter.state()(kD);  // no depth: leave d as it is
       tr.filter.update(z, measurementNoise(params_.noise, z));
+      if (params_.reset_at_border) restartCutComponents(tr.filter, o.box, z, image);
       tr.track.detection = j;
       ++tr.track.hits;
       tr.track.misses = 0;
@@ -98,6 +100,19 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
   tracked_ = std::move(kept);
   for (size_t j = 0; j < observations.size(); ++j)
     if (!observationUsed[j]) startTrack(observations[j], int(j));
+}
+
+void KalmanBoxTracker::restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box,
+                                            const BoxMeasurement& z, const cv::Size& image) const {
+  if (image.empty()) return;
+  constexpr float kTouch = 1.0f;  // px: detectors clip to the image, jitter may leave a pixel
+  const bool cutX = box.x <= kTouch || box.x + box.width >= image.width - kTouch;
+  const bool cutY = box.y <= kTouch || box.y + box.height >= image.height - kTouch;
+  if (!cutX && !cutY) return;
+  const BoxCovariance P0 = initialCovariance(params_.noise, z);
+  filter.restartFrom({kS, kR}, z, P0);
+  if (cutX) filter.restartFrom({kU}, z, P0);
+  if (cutY) filter.restartFrom({kV}, z, P0);
 }
 
 bool KalmanBoxTracker::loseAfterMiss(const Tracked& t, const cv::Size& image) const {

@@ -28,6 +28,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.rho_min_coasting, "rho_min_coasting");
   TRACKING_READ(int, t.max_age, "max_age");
   TRACKING_READ(int, t.min_hits, "min_hits");
+  TRACKING_READ(bool, t.reset_at_border, "reset_at_border");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -50,6 +51,8 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "2nd round for coasting tracks above this; >= rho_min: none (paper)");
   TRACKING_WRITE(t.max_age, "max_age", "detector frames a confirmed track coasts unmatched");
   TRACKING_WRITE(t.min_hits, "min_hits", "matched frames that confirm a new track");
+  TRACKING_WRITE(t.reset_at_border, "reset_at_border",
+                 "boxes cut by the image border restart size and cut centre (not the method)");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");

@@ -16,6 +16,8 @@
 #include <Eigen/Core>
 #include <opencv2/core/types.hpp>
 
+#include <initializer_list>
+
 namespace dynslam::tracking {
 
 /// Indices into the state vector.
@@ -54,6 +56,15 @@ class KalmanBoxFilter {
   /// Sets the area rate to 0, so the next prediction cannot make the area negative (a box that
   /// kept shrinking while coasting; SORT does the same).
   void stopAreaRate() { x_(kRateS) = 0; }
+  /// Sets the depth rate to 0 (a coasting track holds its depth: a walker hidden for a second
+  /// does not keep approaching at the rate it had when it disappeared).
+  void stopDepthRate() { x_(kRateD) = 0; }
+  /// Restarts the measured components `components` (of kU, kV, kS, kR) from the measurement:
+  /// value = z, rate = 0, and their rows and columns of P from `P0` (a new track's covariance
+  /// for z), uncorrelated with the rest. For measurements that do not follow the motion model,
+  /// e.g. a box cut by the image border (KalmanBoxTracker::reset_at_border).
+  void restartFrom(std::initializer_list<int> components, const BoxMeasurement& z,
+                   const BoxCovariance& P0);
 
  private:
   BoxState x_;

@@ -43,6 +43,16 @@ struct KalmanBoxTrackerParams {
   /// after) and the prediction must still be there when it comes back.
   int max_age = 60;
   int min_hits = 3;  ///< matched frames (the first included) that confirm a track
+  /// A detection touching the image border is cut by it: its size, aspect ratio and its centre
+  /// along the cut axis follow the border, not the object's motion (a person walking out of
+  /// the image shrinks to a sliver whose centre slows down and stops). The method's filter
+  /// extrapolates those rates and its aspect ratio, held constant, lags: the predicted box
+  /// collapses (e.g. 37 x 160 px against a 49 x 442 px detection) and the person gets a new ID
+  /// every few frames along the border. true: on such a detection the filter restarts area,
+  /// aspect ratio and the cut axis' centre from the measurement, with zero rates (the next
+  /// prediction is the box as seen). bench-tracking, indoor_people_high, true depth, defaults
+  /// otherwise: 132 -> 93 tracks started, MOTA 0.866 -> 0.898. false: the method as printed.
+  bool reset_at_border = true;
   BoxNoiseParams noise;
 };
 
@@ -92,6 +102,9 @@ class KalmanBoxTracker {
                  double threshold, bool coastingOnly, std::vector<int>& observationOf,
                  std::vector<char>& observationUsed) const;
   void startTrack(const BoxObservation& observation, int index);
+  /// reset_at_border: restarts what the image border cut from the measurement (see there).
+  void restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box, const BoxMeasurement& z,
+                            const cv::Size& image) const;
   /// True when the unmatched track `t` is to be dropped now.
   bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
 
