@@ -39,6 +39,10 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
       c.read_double(s, "motion_prior_sigma_translation", w.motion_prior_sigma_translation);
   w.motion_prior_sigma_rotation =
       c.read_double(s, "motion_prior_sigma_rotation", w.motion_prior_sigma_rotation);
+  w.object_motion_sigma_translation =
+      c.read_double(s, "object_motion_sigma_translation", w.object_motion_sigma_translation);
+  w.object_motion_sigma_rotation =
+      c.read_double(s, "object_motion_sigma_rotation", w.object_motion_sigma_rotation);
   keyframes.min_parallax_px = c.read_double(s, "keyframe_parallax_px", keyframes.min_parallax_px);
   keyframes.max_interval_s = c.read_double(s, "keyframe_max_interval", keyframes.max_interval_s);
   keyframes.min_shared = c.read_int(s, "keyframe_min_shared", keyframes.min_shared);
@@ -71,9 +75,6 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     throw std::invalid_argument("dynamic_handling = '" + h + "': expected none, remove or full");
   nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
   rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
-  if (rigid_factors)
-    throw std::invalid_argument(
-        "rigid_factors = true: the rigid-object factors (r_O, r_om) are not in the window yet");
 }
 
 void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -94,6 +95,10 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
         "m per keyframe interval; RGB-D-only constant-motion prior");
   core::writeKey(c, s, "motion_prior_sigma_rotation", w.motion_prior_sigma_rotation,
         "rad per keyframe interval; RGB-D-only constant-motion prior");
+  core::writeKey(c, s, "object_motion_sigma_translation", w.object_motion_sigma_translation,
+                 "m per keyframe interval; r_om, a rigid object's change of motion");
+  core::writeKey(c, s, "object_motion_sigma_rotation", w.object_motion_sigma_rotation,
+                 "rad per keyframe interval; r_om, a rigid object's change of motion");
   core::writeKey(c, s, "keyframe_parallax_px", keyframes.min_parallax_px,
         "px; mean feature motion since the last keyframe that makes a keyframe");
   core::writeKey(c, s, "keyframe_max_interval", keyframes.max_interval_s, "s; a keyframe at least this often");
@@ -126,7 +131,7 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "nonrigid_factors", nonrigid_factors,
                  "with full: NonRigid features as constant-velocity world points (r_D)");
   core::writeKey(c, s, "rigid_factors", rigid_factors,
-                 "with full: rigid-object factors r_O, r_om (not built yet: must be false)");
+                 "with full: Rigid features as points of their object, object poses (r_O, r_om)");
 }
 
 EstimatorStage::EstimatorStage() = default;
@@ -221,20 +226,10 @@ void EstimatorStage::tryImuInitialization(double t) {
 
 void EstimatorStage::process(core::Frame& frame) {
   if (frames_++ == 0) first_t_ = frame.t;
-  std::vector<FeatureObservation> observations, nonrigid;
-  std::map<std::int64_t, Eigen::Vector2d> pixels;  // the static ones: keyframes and PnP
-  for (const auto& f : frame.features) {
-    const Eigen::Vector2d px(f.pixel.x, f.pixel.y);
-    const FeatureObservation o{f.id, px, f.depth > 0 ? double(f.depth) : 0.0};
-    const bool isStatic = f.feature_class == core::FeatureClass::Static;
-    if (options_.dynamic_handling == DynamicHandling::None || isStatic) {
-      observations.push_back(o);
-      pixels[f.id] = px;
-    } else if (options_.dynamic_handling == DynamicHandling::Full && options_.nonrigid_factors &&
-               f.feature_class == core::FeatureClass::NonRigid) {
-      nonrigid.push_back(o);
-    }
-  }
+  RoutedFeatures routed = routeFeatures(frame.features, options_.dynamic_handling,
+                                        options_.nonrigid_factors, options_.rigid_factors);
+  std::vector<FeatureObservation>& observations = routed.landmarks;
+  const std::map<std::int64_t, Eigen::Vector2d>& pixels = routed.pixels;
   if (options_.use_imu && !imu_) {
     for (const auto& s : frame.imu)
       if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
@@ -264,14 +259,21 @@ void EstimatorStage::process(core::Frame& frame) {
   // the prediction, and the window waits for frames it can constrain.
   const bool seesEnough = window_->empty() || int(observations.size()) >= options_.min_keyframe_features;
   if (!seesEnough) ++blind_frames_;
+  std::vector<std::pair<int, Eigen::Isometry3d>> estimatedObjects;  // the window's, at a keyframe
   if (seesEnough && selector_.decide(frame.t, pixels) != KeyframeSelector::Reason::NotKeyframe) {
     KeyframeInput in;
     in.t = frame.t;
     in.T_world_body = T_wb;
     in.velocity = velocity;
     in.features = std::move(observations);
-    nonrigid_observations_ += nonrigid.size();
-    in.nonrigid_features = std::move(nonrigid);
+    nonrigid_observations_ += routed.nonrigid.size();
+    in.nonrigid_features = std::move(routed.nonrigid);
+    // An object new to the window starts in the frame its trajectory has followed so far.
+    const auto followed = objects_.predict(frame, T_wb * T_ic);
+    for (auto& object : routed.rigid_objects)
+      if (const auto f = followed.find(object.object_id); f != followed.end())
+        object.first_pose_guess = f->second;
+    in.rigid_objects = std::move(routed.rigid_objects);
     if (imu_)
       in.preintegration = imu_->cutAt(frame.t,
                                       window_->empty() ? Eigen::Vector3d::Zero()
@@ -281,6 +283,7 @@ void EstimatorStage::process(core::Frame& frame) {
     SolveReport report = window_->addKeyframe(in);
     ++keyframes_;
     solve_ms_.push_back(report.solve_ms);
+    rigid_objects_solved_ += std::size_t(report.rigid_objects);
     // Failure detection: a solve that fails, or moves the new keyframe implausibly far from its
     // tracked pose, or leaves non-finite states, restarts the window.
     if (report.usable) {
@@ -303,6 +306,7 @@ void EstimatorStage::process(core::Frame& frame) {
       T_wb = *last_body_;
     if (report.usable) {
       T_wb = window_->latestPose();
+      estimatedObjects = window_->latestObjectPoses();
       selector_.accept(frame.t, pixels);
       tryImuInitialization(frame.t);
       if (window_->usesImu()) T_wb = window_->latestPose();
@@ -325,7 +329,7 @@ void EstimatorStage::process(core::Frame& frame) {
   previous_body_ = last_body_;
   last_body_ = T_wb;
   frame.T_world_camera = T_wb * T_ic;
-  objects_.update(frame);
+  objects_.update(frame, estimatedObjects);
 }
 
 void EstimatorStage::finish() {
@@ -339,17 +343,19 @@ void EstimatorStage::finish() {
 }
 
 std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
-  return {{"keyframes", double(keyframes_)},
-          {"solve_ms_median", core::upperMedian(solve_ms_)},
-          {"solve_ms_max",
-           solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
-          {"pnp_failures", double(pnp_failures_)},
-          {"resets", double(resets_)},
-          {"imu_initialized_at", imu_initialized_at_},
-          {"imu_init_attempts", double(imu_init_attempts_)},
-          {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0},
-          {"imu_gaps", imu_ ? double(imu_->gaps()) : 0.0},
-          {"blind_frames", double(blind_frames_)}};
+  return {
+      {"keyframes", double(keyframes_)},
+      {"solve_ms_median", core::upperMedian(solve_ms_)},
+      {"solve_ms_max",
+       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
+      {"pnp_failures", double(pnp_failures_)},
+      {"resets", double(resets_)},
+      {"imu_initialized_at", imu_initialized_at_},
+      {"imu_init_attempts", double(imu_init_attempts_)},
+      {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0},
+      {"rigid_objects_per_keyframe", keyframes_ ? double(rigid_objects_solved_) / keyframes_ : 0.0},
+      {"imu_gaps", imu_ ? double(imu_->gaps()) : 0.0},
+      {"blind_frames", double(blind_frames_)}};
 }
 
 }  // namespace dynslam::estimator

@@ -5,6 +5,8 @@
 #include "dynslam/estimator/factors/ImuFactor.h"
 #include "dynslam/estimator/factors/NonRigidConstantVelocityFactor.h"
 #include "dynslam/estimator/factors/NonRigidDepthFactor.h"
+#include "dynslam/estimator/factors/RigidObjectDepthFactor.h"
+#include "dynslam/estimator/factors/RigidObjectReprojectionFactor.h"
 #include "dynslam/estimator/factors/RigidSmoothMotionFactor.h"
 #include "dynslam/estimator/factors/StaticReprojectionFactor.h"
 #include "dynslam/estimator/factors/TransferredDepthFactor.h"
@@ -30,11 +32,18 @@ class SlidingWindow::ProblemBuilder {
  public:
   ProblemBuilder(SlidingWindow& w) : w_(w), huber_(w.params_.huber_sigmas) {}
 
-  /// `only`: a keyframe id, or -1 for every factor. Returns the landmarks given factors.
-  int forEachFactor(std::int64_t only, const FactorSink& sink) {
+  /// `only`: a keyframe id, or -1 for every factor. Returns the landmarks given factors, and in
+  /// `objects` the rigid objects given factors.
+  int forEachFactor(std::int64_t only, const FactorSink& sink, int* objects = nullptr) {
     int landmarks = 0;
     for (auto& [id, l] : w_.landmarks_.all()) landmarks += landmarkFactors(l, only, sink);
     for (auto& [id, p] : w_.nonrigid_) landmarks += nonRigidFactors(p, only, sink);
+    // Rigid objects: none when marginalising (SlidingWindow.h: they are dropped, not kept).
+    if (only < 0)
+      for (auto& [id, o] : w_.objects_.all()) {
+        const bool used = rigidObjectFactors(o, sink);
+        if (objects) *objects += used;
+      }
     for (size_t k = 1; k < w_.keyframes_.size(); ++k) {
       Keyframe& a = w_.keyframes_[k - 1];
       Keyframe& b = w_.keyframes_[k];
@@ -81,6 +90,40 @@ class SlidingWindow::ProblemBuilder {
              &huber_, {k->pose, w_.extrinsic_, p.position, p.velocity});
     }
     return 1;
+  }
+
+  /// r_O and the depth per observation of each object point seen in two keyframes or more, and
+  /// r_om over each three consecutive keyframes holding an L. Observations the current estimate
+  /// puts behind a camera are left out. Returns whether the object got a factor.
+  bool rigidObjectFactors(RigidObject& o, const FactorSink& sink) {
+    bool used = false;
+    for (auto& [id, p] : o.points) {
+      if (p.observations.size() < 2) continue;
+      const Eigen::Vector3d m_obj(p.m_obj);
+      for (auto& [kf, obs] : p.observations) {
+        Keyframe* k = w_.keyframe(kf);
+        double* L = o.poses.at(kf).data();
+        if (!k || w_.depthIn(*k, poseFromBlock(L) * m_obj) < kMinLandmarkDepth) continue;
+        sink(std::make_shared<RigidObjectReprojectionFactor>(w_.camera_, obs.pixel,
+                                                             w_.params_.pixel_sigma),
+             &huber_, {k->pose, w_.extrinsic_, L, p.m_obj});
+        if (obs.depth > 0)
+          sink(std::make_shared<RigidObjectDepthFactor>(obs.depth, w_.params_.depth_noise), &huber_,
+               {k->pose, w_.extrinsic_, L, p.m_obj});
+        used = true;
+      }
+    }
+    for (auto first = o.poses.begin(); first != o.poses.end(); ++first) {
+      const auto second = std::next(first);
+      if (second == o.poses.end() || std::next(second) == o.poses.end()) break;
+      const auto third = std::next(second);
+      if (second->first != first->first + 1 || third->first != second->first + 1) continue;
+      sink(std::make_shared<RigidSmoothMotionFactor>(w_.params_.object_motion_sigma_translation,
+                                                     w_.params_.object_motion_sigma_rotation),
+           nullptr, {first->second.data(), second->second.data(), third->second.data()});
+      used = true;
+    }
+    return used;
   }
 
   /// The factors of one landmark: the depth at its anchor, and per later observation the
@@ -182,6 +225,15 @@ SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
     }
     it->second.observations[k.id] = {f.pixel, f.depth};
   }
+  const Eigen::Isometry3d T_world_camera = input.T_world_body * poseFromBlock(extrinsic_);
+  for (const auto& object : input.rigid_objects) {
+    std::vector<RigidObjectFeature> features;
+    for (const auto& f : object.features) features.push_back({f.id, f.pixel, f.depth});
+    objects_.observe(object.object_id, k.id, features, T_world_camera, camera_,
+                     object.first_pose_guess);
+  }
+  // Each object's frame at the centroid of the points seen now (SlidingWindow.h).
+  objects_.recentre(k.id);
   SolveReport report = solve();
   if (int(keyframes_.size()) > params_.window_size) marginalizeOldest();
   return report;
@@ -210,15 +262,30 @@ SolveReport SlidingWindow::solve() {
   }
   problem.AddParameterBlock(extrinsic_, 7, &manifold);
   problem.SetParameterBlockConstant(extrinsic_);
+  std::set<const double*> objectPoses;  // pose blocks too: they need the manifold
+  for (auto& [id, o] : objects_.all())
+    for (auto& [kf, L] : o.poses) objectPoses.insert(L.data());
   ProblemBuilder builder(*this);
   SolveReport report;
   report.landmarks = builder.forEachFactor(
-      -1, [&](std::shared_ptr<const ceres::CostFunction> f, const ceres::LossFunction* loss,
-              std::vector<double*> blocks) {
+      -1,
+      [&](std::shared_ptr<const ceres::CostFunction> f, const ceres::LossFunction* loss,
+          std::vector<double*> blocks) {
+        for (double* b : blocks)
+          if (objectPoses.count(b) && !problem.HasParameterBlock(b))
+            problem.AddParameterBlock(b, kPoseSize, &manifold);
         problem.AddResidualBlock(const_cast<ceres::CostFunction*>(f.get()),
                                  const_cast<ceres::LossFunction*>(loss), blocks);
         keep.push_back(std::move(f));
-      });
+      },
+      &report.rigid_objects);
+  // Each object's frame (a gauge freedom): its oldest L in the problem is held.
+  for (auto& [id, o] : objects_.all())
+    for (auto& [kf, L] : o.poses)
+      if (problem.HasParameterBlock(L.data())) {
+        problem.SetParameterBlockConstant(L.data());
+        break;
+      }
   for (auto& [id, l] : landmarks_.all())
     if (problem.HasParameterBlock(&l.inverse_depth))
       problem.SetParameterLowerBound(&l.inverse_depth, 0, 1e-3);
@@ -277,6 +344,8 @@ void SlidingWindow::marginalizeOldest() {
     const double z = depthIn(*k, world);
     return z > kMinLandmarkDepth ? 1.0 / z : 1.0 / 3.0;
   });
+  // The objects' poses and observations there are dropped (SlidingWindow.h).
+  objects_.removeKeyframe(oldest.id);
   // Non-rigid points first seen in the oldest keyframe went into the prior with it.
   for (auto it = nonrigid_.begin(); it != nonrigid_.end();)
     it = it->second.observations.begin()->first == oldest.id ? nonrigid_.erase(it) : std::next(it);
@@ -330,6 +399,16 @@ std::optional<Eigen::Vector3d> SlidingWindow::nonRigidVelocity(std::int64_t id) 
   const auto it = nonrigid_.find(id);
   if (it == nonrigid_.end() || it->second.observations.size() < 2) return std::nullopt;
   return Eigen::Vector3d(it->second.velocity);
+}
+
+std::vector<std::pair<int, Eigen::Isometry3d>> SlidingWindow::latestObjectPoses() const {
+  std::vector<std::pair<int, Eigen::Isometry3d>> out;
+  if (keyframes_.empty()) return out;
+  for (const auto& [id, o] : objects_.all()) {
+    const auto L = o.poses.find(keyframes_.back().id);
+    if (L != o.poses.end()) out.emplace_back(id, poseFromBlock(L->second.data()));
+  }
+  return out;
 }
 
 std::vector<std::pair<std::int64_t, Eigen::Vector3d>> SlidingWindow::landmarkPositions() const {

@@ -80,3 +80,25 @@ TEST(ObjectTrajectories, AGapRestartsAtTheNewCentroid) {
     }
   }
 }
+
+TEST(ObjectTrajectories, TheWindowsEstimateReplacesTheComposedPoseAndIsComposedOn) {
+  ObjectTrajectories trajectories;
+  for (int k = 0; k < 3; ++k) {
+    core::Frame f = frameAt(k);
+    trajectories.update(f);
+  }
+  // Frame 3: the window estimates the object at its true pose; predict() gives what composing
+  // alone would have given (the true motion from the composed frame-2 pose).
+  core::Frame f3 = frameAt(3);
+  const auto predicted = trajectories.predict(f3, cameraAt(3));
+  ASSERT_EQ(predicted.count(7), 1u);
+  trajectories.update(f3, {{7, objectAt(3)}});
+  ASSERT_EQ(f3.object_poses.size(), 1u);
+  EXPECT_TRUE(f3.object_poses[0].T_world_object.isApprox(objectAt(3), 1e-12));
+  EXPECT_FALSE(predicted.at(7).isApprox(objectAt(3), 1e-3)) << "the composed frame differs";
+  // Frame 4 composes the true motion onto the estimate: the true pose again.
+  core::Frame f4 = frameAt(4);
+  trajectories.update(f4);
+  ASSERT_EQ(f4.object_poses.size(), 1u);
+  EXPECT_LT((f4.object_poses[0].T_world_object.matrix() - objectAt(4).matrix()).norm(), 1e-9);
+}

@@ -6,13 +6,14 @@
 // PnP against the window's landmarks. It also carries the tracked objects' rigid point sets
 // into world trajectories (ObjectTrajectories: Frame::object_poses).
 //
-// Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9):
+// Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9;
+// FeatureRouting.h):
 //   none   - every feature, whatever its class (no dynamic handling, like VINS-Mono);
 //   remove - only features classified Static (dynamic features dropped, like Dynamic-VINS);
-//   full   - the paper: Static features as landmarks, and with nonrigid_factors the NonRigid
-//            features as constant-velocity world points (r_D). The rigid-object factors (r_O,
-//            r_om) are not in the window yet: rigid_factors = true is refused, and Rigid
-//            features are dropped as in remove.
+//   full   - the paper: Static features as landmarks, with nonrigid_factors the NonRigid
+//            features as constant-velocity world points (r_D), with rigid_factors the Rigid
+//            features as points of their object, whose poses the window estimates (r_O, r_om;
+//            those estimates then give Frame::object_poses at keyframes).
 //
 // Sensors: RGB-D, and the IMU when the frames carry gyro + accelerometer samples and use_imu is
 // on. The window starts from RGB-D alone (a constant-motion prior ties consecutive keyframes,
@@ -24,6 +25,7 @@
 // T_body_imu^-1 T_body_camera from the rawlog's sensor poses. Without an IMU (e.g. 7-Scenes,
 // TUM's accelerometer-only IMU) it stays RGB-D only.
 #include <dynslam/core/Stage.h>
+#include <dynslam/estimator/FeatureRouting.h>
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/KeyframeImu.h>
 #include <dynslam/estimator/KeyframeSelector.h>
@@ -40,14 +42,12 @@
 
 namespace dynslam::estimator {
 
-enum class DynamicHandling { None, Remove, Full };
-
 struct EstimatorOptions : mrpt::config::CLoadableOptions {
   SlidingWindowParams window;
   KeyframeSelectorParams keyframes;
   DynamicHandling dynamic_handling = DynamicHandling::Remove;
   bool nonrigid_factors = true;  ///< with full: r_D for NonRigid features (Table 9 ablation)
-  bool rigid_factors = false;    ///< with full: r_O / r_om (not built yet: true is refused)
+  bool rigid_factors = true;     ///< with full: r_O / r_om for Rigid features (Table 9 ablation)
   bool use_imu = true;  ///< use the IMU when the frames carry gyro + accelerometer samples
   ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
@@ -73,8 +73,9 @@ class EstimatorStage : public core::Stage {
   void finish() override;
   bool estimatesPose() const override { return true; }
   /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets, imu_initialized_at (s
-  /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D), imu_gaps, blind_frames (too few features
-  /// for a keyframe).
+  /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D),
+  /// rigid_objects_per_keyframe (objects with r_O / r_om factors in the solve), imu_gaps,
+  /// blind_frames (too few features for a keyframe).
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
@@ -98,6 +99,7 @@ class EstimatorStage : public core::Stage {
   std::vector<double> solve_ms_;
   std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
   std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0, blind_frames_ = 0;
+  std::size_t rigid_objects_solved_ = 0;  // sum over keyframes of SolveReport::rigid_objects
   double first_t_ = 0, imu_initialized_at_ = -1;
   std::string last_init_failure_;
 };

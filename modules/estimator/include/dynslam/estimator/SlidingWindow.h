@@ -11,8 +11,26 @@
 // prior (RigidSmoothMotionFactor on the body poses), MarginalizationFactor, and per non-rigid
 // feature NonRigidConstantVelocityFactor + NonRigidDepthFactor (r_D). A non-rigid point leaves
 // the window with the keyframe it was first seen in (marginalised with it).
+//
+// Dynamic rigid objects (RigidObjectTable.h): per object one pose L per keyframe that sees it, one
+// object-frame point m_obj per feature seen in two keyframes or more, RigidObjectReprojectionFactor
+// (r_O, Huber) and RigidObjectDepthFactor per observation, RigidSmoothMotionFactor (r_om) over each
+// three consecutive keyframes that all hold an L of the object.
+// - Gauge: the object frame is free (L_n -> L_n G, m_obj -> G^-1 m_obj); the object's oldest L
+//   in the problem is held constant, and before each solve the frame of every object seen in the
+//   new keyframe is moved (axes kept) to the centroid of the points seen there. Why: the rigid set
+//   on a walking person changes members, and an origin kept where the first members were drifted
+//   up to 0.5 m from the torso over a window (indoor_people_high); recentred, the object position
+//   written follows the points now seen, like the front-end's virtual centroid.
+// - Marginalisation: an object's factors touching the leaving keyframe are DROPPED, not put into
+//   the prior, and its L there with them; the object's next L becomes its gauge. Why: objects
+//   come and go (occlusions, people leaving the view), and a prior linking their states would
+//   have to be carried, re-gauged and finally dropped anyway when the object leaves; the camera
+//   loses only what r_om through the leaving keyframe said about it, which the static landmarks
+//   and the IMU dominate. The non-rigid points, by contrast, go into the prior.
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/LandmarkTable.h>
+#include <dynslam/estimator/RigidObjectTable.h>
 #include <dynslam/estimator/factors/DepthMeasurementFactor.h>
 #include <dynslam/estimator/factors/MarginalizationFactor.h>
 #include <dynslam/estimator/factors/PinholeProjection.h>
@@ -47,12 +65,23 @@ struct SlidingWindowParams {
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
   /// RGB-D only: sigmas of the constant-motion prior per keyframe interval (m, rad).
   double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
+  /// r_om: sigmas of a rigid object's change of motion per keyframe interval (m, rad).
+  double object_motion_sigma_translation = 0.05, object_motion_sigma_rotation = 0.05;
 };
 
 struct FeatureObservation {
   std::int64_t id = -1;
   Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
   double depth = 0;  ///< m; 0 = none
+};
+
+/// One dynamic rigid object's features in a keyframe (r_O).
+struct RigidObjectInput {
+  int object_id = -1;
+  std::vector<FeatureObservation> features;
+  /// Where a new object's first pose L is put (the object frame the caller follows), else at
+  /// the centroid of its measured points with the world's axes.
+  std::optional<Eigen::Isometry3d> first_pose_guess;
 };
 
 struct KeyframeInput {
@@ -63,6 +92,8 @@ struct KeyframeInput {
   /// Features on dynamic non-rigid objects (method.md r_D): each a world point moving at
   /// constant velocity over the window; new ones need a measured depth.
   std::vector<FeatureObservation> nonrigid_features;
+  /// Features on dynamic rigid objects (method.md r_O, r_om), per object.
+  std::vector<RigidObjectInput> rigid_objects;
   /// IMU mode: the preintegration from the previous keyframe to this one (null for the first,
   /// and where the IMU stream had a gap: that pair is then linked by vision alone).
   std::shared_ptr<ImuPreintegration> preintegration;
@@ -72,6 +103,7 @@ struct SolveReport {
   int iterations = 0;
   double solve_ms = 0;
   int landmarks = 0;     ///< landmarks with factors in the problem
+  int rigid_objects = 0;  ///< rigid objects with factors in the problem
   double final_cost = 0;
   bool usable = true;
   std::string message;  ///< Ceres' reason when not usable
@@ -115,6 +147,10 @@ class SlidingWindow {
   /// keyframes or more), else nothing.
   std::optional<Eigen::Vector3d> nonRigidVelocity(std::int64_t id) const;
 
+  /// The rigid objects' poses L = T_world_object at the newest keyframe: the solve's estimate
+  /// (an L without factors yet keeps its initial value).
+  std::vector<std::pair<int, Eigen::Isometry3d>> latestObjectPoses() const;
+
   /// World positions of the landmarks seen in at least two keyframes, for tracking frames
   /// between keyframes.
   std::vector<std::pair<std::int64_t, Eigen::Vector3d>> landmarkPositions() const;
@@ -155,6 +191,7 @@ class SlidingWindow {
   std::int64_t next_id_ = 0;
   LandmarkTable landmarks_;
   std::map<std::int64_t, NonRigidPoint> nonrigid_;
+  RigidObjectTable objects_;
   Prior prior_;
 };
 

@@ -1,0 +1,28 @@
+#include "dynslam/estimator/FeatureRouting.h"
+
+namespace dynslam::estimator {
+
+RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, DynamicHandling handling,
+                             bool nonrigid_factors, bool rigid_factors) {
+  RoutedFeatures out;
+  std::map<int, std::size_t> objectIndex;  // object id -> its entry in out.rigid_objects
+  const bool full = handling == DynamicHandling::Full;
+  for (const auto& f : features) {
+    const Eigen::Vector2d px(f.pixel.x, f.pixel.y);
+    const FeatureObservation o{f.id, px, f.depth > 0 ? double(f.depth) : 0.0};
+    if (handling == DynamicHandling::None || f.feature_class == core::FeatureClass::Static) {
+      out.landmarks.push_back(o);
+      out.pixels[f.id] = px;
+    } else if (full && nonrigid_factors && f.feature_class == core::FeatureClass::NonRigid) {
+      out.nonrigid.push_back(o);
+    } else if (full && rigid_factors && f.feature_class == core::FeatureClass::Rigid &&
+               f.object_id >= 0) {
+      const auto [it, isNew] = objectIndex.try_emplace(f.object_id, out.rigid_objects.size());
+      if (isNew) out.rigid_objects.push_back({f.object_id, {}, std::nullopt});
+      out.rigid_objects[it->second].features.push_back(o);
+    }
+  }
+  return out;
+}
+
+}  // namespace dynslam::estimator
