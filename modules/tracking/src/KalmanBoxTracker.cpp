@@ -1,9 +1,11 @@
 #include "dynslam/tracking/KalmanBoxTracker.h"
 
 #include <dynslam/core/HungarianAssignment.h>
+#include "dynslam/tracking/Appearance.h"
 #include "dynslam/tracking/DepthIoU.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dynslam::tracking {
 
@@ -71,6 +73,7 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
   associate(observations, image, params_.rho_min, false, observationOf, observationUsed);
   if (params_.rho_min_coasting < params_.rho_min)
     associate(observations, image, params_.rho_min_coasting, true, observationOf, observationUsed);
+  if (params_.reid_max_distance > 0) reidentify(observations, observationOf, observationUsed);
 
   std::vector<Tracked> kept;
   kept.reserve(tracked_.size() + observations.size());
@@ -84,6 +87,10 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
       tr.filter.update(z, measurementNoise(params_.noise, z));
       if (params_.reset_at_border) restartCutComponents(tr.filter, o.box, z, image);
       tr.track.detection = j;
+      if (!o.appearance.empty())
+        tr.appearance = tr.appearance.empty() ? o.appearance.clone()
+                                              : params_.appearance_memory * tr.appearance +
+                                                    (1 - params_.appearance_memory) * o.appearance;
       ++tr.track.hits;
       tr.track.misses = 0;
       if (tr.track.hits >= params_.min_hits) tr.track.state = core::TrackState::Confirmed;
@@ -100,6 +107,44 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
   tracked_ = std::move(kept);
   for (size_t j = 0; j < observations.size(); ++j)
     if (!observationUsed[j]) startTrack(observations[j], int(j));
+}
+
+void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observations,
+                                  std::vector<int>& observationOf,
+                                  std::vector<char>& observationUsed) const {
+  std::vector<int> rows, cols;
+  for (size_t i = 0; i < tracked_.size(); ++i)
+    if (observationOf[i] < 0 && !tracked_[i].appearance.empty() &&
+        tracked_[i].track.state == core::TrackState::Confirmed)
+      rows.push_back(int(i));
+  for (size_t j = 0; j < observations.size(); ++j)
+    if (!observationUsed[j] && !observations[j].appearance.empty()) cols.push_back(int(j));
+  if (rows.empty() || cols.empty()) return;
+  Eigen::MatrixXd gain = Eigen::MatrixXd::Zero(rows.size(), cols.size());
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const Tracked& tr = tracked_[rows[r]];
+    const cv::Rect2f predicted = tr.filter.box();
+    const double depth = tr.filter.state()(kD);
+    for (size_t c = 0; c < cols.size(); ++c) {
+      const BoxObservation& o = observations[cols[c]];
+      if (o.category != tr.track.category) continue;
+      const double distance = appearanceDistance(tr.appearance, o.appearance);
+      const cv::Point2f shift = (o.box.tl() + o.box.br()) * 0.5f -
+                                (predicted.tl() + predicted.br()) * 0.5f;
+      const double height = std::max(o.box.height, predicted.height);
+      const bool depthAgrees =
+          !(depth > 0 && o.depth > 0) || std::max(depth, o.depth) < 1.5 * std::min(depth, o.depth);
+      if (distance < params_.reid_max_distance && depthAgrees &&
+          std::hypot(shift.x, shift.y) <= params_.reid_max_shift * height)
+        gain(r, c) = 1.0 - distance;
+    }
+  }
+  const std::vector<int> assigned = core::solveMaxGainAssignment(gain);
+  for (size_t r = 0; r < rows.size(); ++r)
+    if (assigned[r] >= 0 && gain(r, assigned[r]) > 0) {
+      observationOf[rows[r]] = cols[assigned[r]];
+      observationUsed[cols[assigned[r]]] = 1;
+    }
 }
 
 void KalmanBoxTracker::restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box,

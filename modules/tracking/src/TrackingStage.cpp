@@ -1,5 +1,6 @@
 #include "dynslam/tracking/TrackingStage.h"
 
+#include "dynslam/tracking/Appearance.h"
 #include "dynslam/tracking/ObjectDepth.h"
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -29,6 +30,9 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(int, t.max_age, "max_age");
   TRACKING_READ(int, t.min_hits, "min_hits");
   TRACKING_READ(bool, t.reset_at_border, "reset_at_border");
+  TRACKING_READ(double, t.reid_max_distance, "reid_max_distance");
+  TRACKING_READ(double, t.reid_max_shift, "reid_max_shift");
+  TRACKING_READ(double, t.appearance_memory, "appearance_memory");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -53,6 +57,11 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   TRACKING_WRITE(t.min_hits, "min_hits", "matched frames that confirm a new track");
   TRACKING_WRITE(t.reset_at_border, "reset_at_border",
                  "boxes cut by the image border restart size and cut centre (not the method)");
+  TRACKING_WRITE(t.reid_max_distance, "reid_max_distance",
+                 "> 0: coasting tracks re-found by colour histogram below this (not the method)");
+  TRACKING_WRITE(t.reid_max_shift, "reid_max_shift", "box heights; re-finding's reach");
+  TRACKING_WRITE(t.appearance_memory, "appearance_memory",
+                 "weight of a track's colour histogram against a new detection's");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");
@@ -83,7 +92,15 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
   if (t.min_hits < 1)
     throw core::ConfigError("[" + section + "] min_hits = " + std::to_string(t.min_hits) + " in " +
                             cfg.source() + ": must be >= 1");
-  const std::pair<double, const char*> positive[] = {{n.meas_center_px, "meas_center_px"},
+  const std::pair<double, const char*> unitInterval[] = {
+      {t.reid_max_distance, "reid_max_distance"},
+      {t.appearance_memory, "appearance_memory"}};
+  for (const auto& [value, key] : unitInterval)
+    if (!(value >= 0 && value <= 1))
+      throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +
+                              cfg.source() + ": must be in [0, 1]");
+  const std::pair<double, const char*> positive[] = {{t.reid_max_shift, "reid_max_shift"},
+                                                     {n.meas_center_px, "meas_center_px"},
                                                      {n.meas_area_rel, "meas_area_rel"},
                                                      {n.meas_depth_rel, "meas_depth_rel"},
                                                      {n.meas_ratio, "meas_ratio"},
@@ -103,11 +120,14 @@ void TrackingStage::process(core::Frame& frame) {
   tracker_.predict(frame.t);
   if (frame.detections_fresh) {
     ++detectorFrames_;
+    const auto& p = tracker_.params();
+    const bool usesAppearance = p.reid_max_distance > 0;
     std::vector<BoxObservation> observations;
     observations.reserve(frame.detections.size());
     for (size_t i = 0; i < frame.detections.size(); ++i) {
       const auto& d = frame.detections[i];
-      observations.push_back({d.box, measuredObjectDepth(frame, i), d.category, d.model});
+      observations.push_back({d.box, measuredObjectDepth(frame, i), d.category, d.model,
+                              usesAppearance ? observationAppearance(frame, i) : cv::Mat()});
     }
     const cv::Size image = !frame.rgb.empty() ? frame.rgb.size() : frame.depth.size();
     tracker_.update(observations, image);

@@ -69,7 +69,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "accel_center_px", "accel_area_rel", "accel_depth", "ratio_walk",
                           "init_rate_center_px", "init_rate_area_rel", "init_rate_depth"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 16u);
+  EXPECT_EQ(keys.size(), 19u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
