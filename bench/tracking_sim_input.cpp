@@ -4,8 +4,8 @@
 #include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/detection/GroundTruthDetector.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
-#include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/segmentation/MaskQuality.h>
+#include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/sim/Simulator.h>
 #include <dynslam/tracking/Appearance.h>
 #include <dynslam/tracking/DepthIoU.h>
@@ -108,8 +108,8 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
     c.t = frame.t;
     for (size_t k = 0; k < frame.detections.size(); ++k) {
       const auto& d = frame.detections[k];
-      c.observations.push_back({d.box, tracking::measuredObjectDepth(frame, k), d.category,
-                                d.model, tracking::observationAppearance(frame, k)});
+      c.observations.push_back({d.box, tracking::measuredObjectDepth(frame, k), d.category, d.model,
+                                tracking::observationAppearance(frame, k)});
       for (const auto& o : sf.objects)
         if (o.id == d.truth_id) {
           const double truthDepth = trueDepth(sf, o);

@@ -9,10 +9,10 @@ namespace dynslam::tracking {
 
 cv::Mat torsoHistogram(const cv::Mat& bgr, const cv::Rect2f& box) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {};
-  const cv::Rect torso = cv::Rect(cvRound(box.x + 0.25f * box.width),
-                                  cvRound(box.y + 0.2f * box.height), cvRound(0.5f * box.width),
-                                  cvRound(0.4f * box.height)) &
-                         cv::Rect(0, 0, bgr.cols, bgr.rows);
+  const cv::Rect torso =
+      cv::Rect(cvRound(box.x + 0.25f * box.width), cvRound(box.y + 0.2f * box.height),
+               cvRound(0.5f * box.width), cvRound(0.4f * box.height)) &
+      cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (torso.area() < 50) return {};
   cv::Mat hsv;
   cv::cvtColor(bgr(torso), hsv, cv::COLOR_BGR2HSV);  // H in [0, 180)

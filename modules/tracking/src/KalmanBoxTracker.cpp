@@ -129,8 +129,8 @@ void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observation
       const BoxObservation& o = observations[cols[c]];
       if (o.category != tr.track.category) continue;
       const double distance = appearanceDistance(tr.appearance, o.appearance);
-      const cv::Point2f shift = (o.box.tl() + o.box.br()) * 0.5f -
-                                (predicted.tl() + predicted.br()) * 0.5f;
+      const cv::Point2f shift =
+          (o.box.tl() + o.box.br()) * 0.5f - (predicted.tl() + predicted.br()) * 0.5f;
       const double height = std::max(o.box.height, predicted.height);
       const bool depthAgrees =
           !(depth > 0 && o.depth > 0) || std::max(depth, o.depth) < 1.5 * std::min(depth, o.depth);

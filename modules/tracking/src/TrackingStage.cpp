@@ -93,8 +93,7 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
     throw core::ConfigError("[" + section + "] min_hits = " + std::to_string(t.min_hits) + " in " +
                             cfg.source() + ": must be >= 1");
   const std::pair<double, const char*> unitInterval[] = {
-      {t.reid_max_distance, "reid_max_distance"},
-      {t.appearance_memory, "appearance_memory"}};
+      {t.reid_max_distance, "reid_max_distance"}, {t.appearance_memory, "appearance_memory"}};
   for (const auto& [value, key] : unitInterval)
     if (!(value >= 0 && value <= 1))
       throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +

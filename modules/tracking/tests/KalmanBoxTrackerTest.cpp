@@ -262,7 +262,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPredic
 }
 
 TEST(TrackingAppearance, TorsoHistogramSeparatesColoursAndIgnoresTheLegs) {
-  cv::Mat image(200, 100, CV_8UC3, cv::Scalar(0, 0, 200));  // red everywhere
+  cv::Mat image(200, 100, CV_8UC3, cv::Scalar(0, 0, 200));        // red everywhere
   image(cv::Rect(0, 130, 100, 70)).setTo(cv::Scalar(200, 0, 0));  // blue legs
   const cv::Mat red = torsoHistogram(image, cv::Rect2f(0, 0, 100, 200));
   ASSERT_FALSE(red.empty());

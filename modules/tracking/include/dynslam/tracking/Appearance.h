@@ -10,8 +10,9 @@
 // Region: the box's torso (middle half of the width, 20-60 % of the height: no floor, little
 // background, no legs that swing and no head that turns). Not restricted to the segmentation's
 // mask: on indoor_people_high a person's descriptor one detector frame apart differed by 0.83
-// or more in 10 % of frames with the mask (wrong or tiny masks), 0.21 without. Hue x saturation, 16 x 4 bins, pixels too dark or too grey for a
-// stable hue (V < 40 or S < 40 of 255) go to 4 extra grey-level bins, L1-normalised.
+// or more in 10 % of frames with the mask (wrong or tiny masks), 0.21 without. Hue x saturation, 16
+// x 4 bins, pixels too dark or too grey for a stable hue (V < 40 or S < 40 of 255) go to 4 extra
+// grey-level bins, L1-normalised.
 #include <dynslam/core/Frame.h>
 
 #include <opencv2/core/mat.hpp>
