@@ -134,7 +134,7 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
   if (params_.object_cluster != ObjectCluster::OccluderAware) {
     for (size_t i = 0; i < detections.size(); ++i)
       masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
-    resolveMutualOcclusion(masks);
+    resolveOverlaps(masks, depth);
     return masks;
   }
   const size_t n = detections.size();
@@ -170,8 +170,36 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     }
     masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject));
   }
-  resolveMutualOcclusion(masks);
+  resolveOverlaps(masks, depth);
   return masks;
+}
+
+void DepthThresholdSegmenter::resolveOverlaps(std::vector<core::ObjectMask>& masks,
+                                              const cv::Mat& depth) const {
+  if (params_.overlap_rule == OverlapRule::ClosestDepth)
+    resolveByClosestDepth(masks, depth);
+  else
+    resolveMutualOcclusion(masks);
+}
+
+void resolveByClosestDepth(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) {
+  for (size_t a = 0; a < masks.size(); ++a)
+    for (size_t b = a + 1; b < masks.size(); ++b) {
+      core::ObjectMask &A = masks[a], &B = masks[b];
+      if (!A.valid || !B.valid || A.mask.empty() || B.mask.empty()) continue;
+      const cv::Rect overlap = A.roi & B.roi;
+      for (int y = overlap.y; y < overlap.y + overlap.height; ++y) {
+        uint8_t* rowA = A.mask.ptr<uint8_t>(y - A.roi.y) - A.roi.x;
+        uint8_t* rowB = B.mask.ptr<uint8_t>(y - B.roi.y) - B.roi.x;
+        const float* z = depth.ptr<float>(y);
+        for (int x = overlap.x; x < overlap.x + overlap.width; ++x) {
+          if (!rowA[x] || !rowB[x]) continue;
+          const double da = std::abs(z[x] - A.d_t), db = std::abs(z[x] - B.d_t);
+          const bool toA = da < db || (da == db && A.d_t <= B.d_t);
+          (toA ? rowB : rowA)[x] = 0;
+        }
+      }
+    }
 }
 
 void resolveMutualOcclusion(std::vector<core::ObjectMask>& masks) {

@@ -38,6 +38,15 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   else
     throw std::invalid_argument("object_cluster = '" + cluster +
                                 "': expected far (the method), larger or occluder_aware");
+  const std::string overlap =
+      c.read_string(s, "overlap_rule", p.overlap_rule == OverlapRule::Nearer ? "nearer" : "closest_depth");
+  if (overlap == "nearer")
+    p.overlap_rule = OverlapRule::Nearer;
+  else if (overlap == "closest_depth")
+    p.overlap_rule = OverlapRule::ClosestDepth;
+  else
+    throw std::invalid_argument("overlap_rule = '" + overlap +
+                                "': expected nearer (the method) or closest_depth");
   const std::string which = c.read_string(
       s, "boxes", boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks");
   if (which == "detections")
@@ -64,6 +73,10 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
         "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
         "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
         "variants, not the method)");
+  core::writeKey(c, s, "overlap_rule",
+        std::string(p.overlap_rule == OverlapRule::Nearer ? "nearer" : "closest_depth"),
+        "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
+        "the object whose d_t is closest to the pixel's depth (not the method)");
   core::writeKey(c, s, "boxes",
         std::string(boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks"),
         "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "

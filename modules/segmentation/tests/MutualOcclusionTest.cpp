@@ -108,3 +108,27 @@ TEST(MutualOcclusion, InvalidMasksTakePartInNothing) {
   EXPECT_FALSE(masks[1].valid);
   EXPECT_EQ(cv::countNonZero(masks[0].mask), 55 * 100 - 20 * 100);
 }
+
+// Two people 0.3 m apart in depth (less than e = 0.5 m), boxes overlapping: each range holds
+// both people's depths. The method's rule gives the near person every overlap pixel; with
+// overlap_rule closest_depth the far person keeps its own pixels there.
+TEST(SegmentationMutualOcclusion, ClosestDepthKeepsAPersonJustBehindAnother) {
+  cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(6.0f));  // wall
+  depth(cv::Rect(60, 40, 100, 180)).setTo(2.0f);        // near person
+  depth(cv::Rect(160, 40, 100, 180)).setTo(2.3f);       // far person, right of it
+  // The near box's candidate box (its central half) sees the near person only.
+  const std::vector<core::Detection> boxes = {person({50, 30, 120, 200}),
+                                              person({120, 30, 150, 200})};
+  for (auto rule : {segmentation::OverlapRule::Nearer, segmentation::OverlapRule::ClosestDepth}) {
+    segmentation::DepthThresholdParams p;
+    p.overlap_rule = rule;
+    const auto masks = DepthThresholdSegmenter(p).segment(depth, boxes);
+    ASSERT_TRUE(masks[0].valid && masks[1].valid);
+    ASSERT_TRUE(inRange(masks[0], 2.3f)) << "the case this test is about";
+    const bool closest = rule == segmentation::OverlapRule::ClosestDepth;
+    EXPECT_EQ(owns(masks[1], 165, 100), closest) << "far person's pixel in the overlap";
+    EXPECT_EQ(owns(masks[0], 165, 100), !closest);
+    EXPECT_TRUE(owns(masks[0], 130, 100)) << "near person's pixel in the overlap stays its own";
+    EXPECT_FALSE(owns(masks[1], 130, 100));
+  }
+}

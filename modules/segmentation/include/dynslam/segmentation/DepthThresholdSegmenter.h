@@ -27,6 +27,16 @@ enum class ObjectCluster {
   OccluderAware
 };
 
+/// Which object a pixel goes to when several masks hold it (step 9).
+enum class OverlapRule {
+  Nearer,  ///< method.md: the nearer object (smallest d_t)
+  /// NOT the method: the object whose d_t is closest to the pixel's depth (the nearer one on a
+  /// tie). With e = 0.5 m the near person's range [T_min, T_max] often holds a person walking
+  /// less than e behind; "nearer" then gives the near person all of the other's pixels in
+  /// the overlap. indoor_people_high (occluder_aware): mask IoU 0.703 -> 0.734.
+  ClosestDepth
+};
+
 /// The method's parameters (defaults: method.md section 1). Read from the ini by
 /// SegmentationOptions, which documents each key.
 struct DepthThresholdParams {
@@ -38,6 +48,7 @@ struct DepthThresholdParams {
   double e_other_rigid = 3.0;        ///< m; e for any other category with a rigid model
   double min_valid_fraction = 0.25;  ///< of the m samples that must have depth, else not valid
   ObjectCluster object_cluster = ObjectCluster::Far;
+  OverlapRule overlap_rule = OverlapRule::Nearer;
 
   /// Throws std::invalid_argument naming the first field out of range.
   void validate() const;
@@ -72,12 +83,19 @@ class DepthThresholdSegmenter {
                                int detectionIndex, const TwoMeansResult& clusters,
                                bool objectIsNear) const;
 
+  /// Step 9 by params_.overlap_rule.
+  void resolveOverlaps(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) const;
+
   DepthThresholdParams params_;
 };
 
 /// Step 9: where valid masks overlap, a pixel set in several of them stays only in the one
 /// with the smallest d_t (the nearer object; equal d_t: the earlier mask).
 void resolveMutualOcclusion(std::vector<core::ObjectMask>& masks);
+
+/// Step 9 with OverlapRule::ClosestDepth: a pixel set in several valid masks stays only in the
+/// one whose d_t is closest to its depth in `depth` (the smaller d_t on a tie).
+void resolveByClosestDepth(std::vector<core::ObjectMask>& masks, const cv::Mat& depth);
 
 /// The detection box in whole pixels (edges rounded), clipped to an image of `size`.
 cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size);
