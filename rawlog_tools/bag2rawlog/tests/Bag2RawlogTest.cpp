@@ -216,3 +216,17 @@ TEST(Bag2Rawlog, EmbeddedImagesNeedNoImagesFolder) {
   ASSERT_EQ(back.frames.size(), static_cast<size_t>(kFrames));
   expectSameImage(back.frames[2].rgb, expectedBgr(2), "embedded frame 2");
 }
+
+TEST(Bag2Rawlog, CompressedDepthPngIsReadInMillimetres) {
+  const std::string dir = dynslam::testing::scratchDir();
+  // --set overrides topic-map keys; an empty topic is not converted.
+  const Conversion c =
+      convert(dir, kRawTopics,
+              "--set bag2rawlog.depth_topic=/cam/depth_compressed --set bag2rawlog.imu_topic= "
+              "--set bag2rawlog.gnss_topic=");
+  ASSERT_EQ(c.result.exit_code, 0) << c.result.output;
+  const ReadBack back = readBack(c.rawlog);
+  ASSERT_EQ(back.frames.size(), static_cast<size_t>(kFrames));
+  for (int i = 0; i < kFrames; ++i) expectDepthMetres(back.frames[i].depth, i);
+  EXPECT_TRUE(back.imu.empty());
+}

@@ -155,6 +155,15 @@ void writeTestBag(const std::string& path) {
     cv::Mat metres;
     mm.convertTo(metres, CV_32FC1, 0.001);
     bag.write("/cam/depth_metres", recorded(td, 0.045), imageMessage(metres, "32FC1", td));
+    // image_transport's compressedDepth: a 12-byte ConfigHeader (format, 2 floats), then PNG.
+    sensor_msgs::CompressedImage packed;
+    packed.header = header(td, "camera_depth_optical_frame");
+    packed.format = "16UC1; compressedDepth png";
+    packed.data.assign(12, 0);
+    std::vector<uint8_t> png;
+    cv::imencode(".png", mm, png);
+    packed.data.insert(packed.data.end(), png.begin(), png.end());
+    bag.write("/cam/depth_compressed", recorded(td, 0.045), packed);
     cv::Mat eight(kHeight, kWidth, CV_8UC1, cv::Scalar(5));
     bag.write("/cam/depth_8bit", recorded(td, 0.045), imageMessage(eight, "mono8", td));
   }

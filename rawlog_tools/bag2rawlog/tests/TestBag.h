@@ -5,6 +5,7 @@
 //   /cam/color/camera_info            CameraInfo (once)
 //   /cam/aligned_depth/image_raw      16UC1 mm, 3 ms after each colour frame
 //   /cam/depth_metres                 32FC1 m, the same depth
+//   /cam/depth_compressed             the same depth, image_transport compressedDepth (PNG)
 //   /cam/depth_8bit                   mono8 "depth" (no depth encoding)
 //   /imu                              Imu, gyro + accel, 200 Hz
 //   /accel/sample, /gyro/sample       split Imu streams, 100 Hz and 200 Hz (RealSense)
