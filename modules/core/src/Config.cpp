@@ -80,8 +80,19 @@ std::vector<std::string> knownKeys(const mrpt::config::CLoadableOptions& options
   return keys;
 }
 
+namespace {
+thread_local OptionsObserver* t_optionsObserver = nullptr;
+}  // namespace
+
+OptionsObserver* setOptionsObserver(OptionsObserver* observer) {
+  OptionsObserver* previous = t_optionsObserver;
+  t_optionsObserver = observer;
+  return previous;
+}
+
 void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,
                        const std::string& section) {
+  if (t_optionsObserver) t_optionsObserver->aboutToLoad(options, section);
   const auto known = knownKeys(options);
   for (const auto& key : cfg.keys(section)) {
     const bool found =

@@ -65,6 +65,21 @@ void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, cons
 void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
               const char* value, const std::string& comment);
 
+/// Sees the options structs loadOptionsStrict loads, before it loads them (so they still hold
+/// their defaults). The parameter reference (dynslam-params) configures every registered stage
+/// once with one installed, so it learns each stage's sections, keys, defaults and comments
+/// from the structs themselves instead of from a list that could drift.
+class OptionsObserver {
+ public:
+  virtual ~OptionsObserver() = default;
+  virtual void aboutToLoad(const mrpt::config::CLoadableOptions& options,
+                           const std::string& section) = 0;
+};
+
+/// Installs `observer` for loadOptionsStrict calls made by the calling thread (nullptr: none);
+/// returns the one it replaces.
+OptionsObserver* setOptionsObserver(OptionsObserver* observer);
+
 /// Throws ConfigError naming the first section of `cfg` that is not in `known`.
 void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>& known);
 
