@@ -38,6 +38,18 @@ std::string fixed(const char* format, double value) {
 
 }  // namespace
 
+cv::Scalar featureClassColour(core::FeatureClass feature_class) {
+  switch (feature_class) {
+    case core::FeatureClass::Static:
+      return {80, 220, 80};
+    case core::FeatureClass::Rigid:
+      return {0, 160, 255};
+    case core::FeatureClass::NonRigid:
+      return {255, 0, 255};
+  }
+  return {255, 255, 255};
+}
+
 cv::Mat renderAnnotatedFrame(const core::Frame& f, const AnnotationOptions& o) {
   cv::Mat img = baseImage(f);
   const cv::Rect whole(0, 0, img.cols, img.rows);
@@ -83,10 +95,16 @@ cv::Mat renderAnnotatedFrame(const core::Frame& f, const AnnotationOptions& o) {
             o.font_scale);
     }
 
-  char header[128];
-  std::snprintf(header, sizeof header, "frame %zu  t=%.3f s  %zu detections%s  %zu tracks", f.index,
-                f.t, f.detections.size(), f.detections_fresh ? "" : " (none fresh)",
-                f.tracks.size());
+  if (o.features)
+    for (const auto& feature : f.features)
+      cv::circle(img, feature.pixel, 2, featureClassColour(feature.feature_class), cv::FILLED,
+                 cv::LINE_AA);
+
+  char header[160];
+  std::snprintf(
+      header, sizeof header, "frame %zu  t=%.3f s  %zu detections%s  %zu tracks%s", f.index, f.t,
+      f.detections.size(), f.detections_fresh ? "" : " (none fresh)", f.tracks.size(),
+      f.features.empty() ? "" : ("  " + std::to_string(f.features.size()) + " features").c_str());
   label(img, header, {6, 16}, {255, 255, 255}, o.font_scale);
   return img;
 }

@@ -75,3 +75,26 @@ TEST(AnnotatedFrame, DrawsOnDepthWhenThereIsNoColour) {
   EXPECT_EQ(img.at<cv::Vec3b>(100, 150), cv::Vec3b(128, 128, 128)) << "2.5 m of 0-5 m";
   EXPECT_EQ(viz::renderAnnotatedFrame(core::Frame{}).size(), cv::Size(640, 480));
 }
+
+TEST(AnnotatedFrame, FeaturesColouredByClass) {
+  core::Frame f;
+  f.rgb = cv::Mat(120, 160, CV_8UC3, cv::Scalar(90, 90, 90));
+  const core::FeatureClass classes[] = {core::FeatureClass::Static, core::FeatureClass::Rigid,
+                                        core::FeatureClass::NonRigid};
+  for (int i = 0; i < 3; ++i) {
+    core::Feature feature;
+    feature.pixel = cv::Point2f(40.f + 40.f * i, 80.f);
+    feature.feature_class = classes[i];
+    f.features.push_back(feature);
+  }
+  const cv::Mat img = viz::renderAnnotatedFrame(f);
+  for (int i = 0; i < 3; ++i) {
+    const cv::Scalar c = viz::featureClassColour(classes[i]);
+    EXPECT_EQ(img.at<cv::Vec3b>(80, 40 + 40 * i), cv::Vec3b(c[0], c[1], c[2])) << i;
+  }
+  EXPECT_NE(viz::featureClassColour(core::FeatureClass::Static),
+            viz::featureClassColour(core::FeatureClass::NonRigid));
+  viz::AnnotationOptions off;
+  off.features = false;
+  EXPECT_EQ(viz::renderAnnotatedFrame(f, off).at<cv::Vec3b>(80, 40), cv::Vec3b(90, 90, 90));
+}

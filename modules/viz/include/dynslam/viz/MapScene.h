@@ -1,0 +1,64 @@
+#pragma once
+// The run as a 3-D scene for MRPT's SceneViewer3D (map.3Dscene): a static coloured point map,
+// the camera trajectory and each estimated object's track. Built frame by frame while the run
+// goes, saved once at the end. MRPT-free header: the opengl types stay in MapScene.cpp.
+#include <dynslam/core/Frame.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace dynslam::viz {
+
+/// Names of the objects in the saved scene (COpenGLScene::getByName finds them).
+inline constexpr const char* kStaticMapName = "static_map";                ///< CPointCloudColoured
+inline constexpr const char* kCameraTrajectoryName = "camera_trajectory";  ///< CSetOfLines
+/// CSetOfLines of object `id` (the Track id, as in objects/<id>.tum): "object_<id>".
+std::string objectTrackName(int id);
+
+struct MapSceneOptions {
+  /// Back-project one frame out of this many (of those with a camera pose): consecutive frames
+  /// see nearly the same surfaces, and every frame would cost time for no new points.
+  int every_n_frames = 10;
+  int pixel_stride = 4;      ///< back-project every n-th pixel in x and y
+  double voxel_size = 0.05;  ///< m; one point (mean position and colour) per occupied voxel
+  double max_depth = 6.0;    ///< m; far depth is noisy (sigma grows with z^2)
+};
+
+class MapSceneBuilder {
+ public:
+  explicit MapSceneBuilder(MapSceneOptions options = {});
+
+  /// Takes the frame's camera pose, its object poses, and (every n-th posed frame) its static
+  /// pixels: depth outside every object mask and outside the box of every track that has no
+  /// mask this frame (a coasting track's object is still there, just not segmented).
+  void addFrame(const core::Frame& frame);
+
+  /// Writes the scene with COpenGLScene::saveToFile; throws std::runtime_error naming `path`.
+  void save(const std::string& path) const;
+
+  std::size_t pointCount() const { return voxels_.size(); }
+  std::size_t cameraPoses() const { return camera_.size(); }
+  std::size_t objectTracks() const { return objects_.size(); }
+
+ private:
+  struct Voxel {
+    Eigen::Vector3f position_sum = Eigen::Vector3f::Zero();
+    Eigen::Vector3f bgr_sum = Eigen::Vector3f::Zero();
+    std::uint32_t count = 0;
+  };
+  void addStaticPoints(const core::Frame& frame);
+
+  MapSceneOptions options_;
+  std::size_t posed_frames_ = 0;
+  std::unordered_map<std::uint64_t, Voxel> voxels_;
+  std::vector<Eigen::Vector3f> camera_;
+  std::map<int, std::vector<Eigen::Vector3f>> objects_;
+};
+
+}  // namespace dynslam::viz
