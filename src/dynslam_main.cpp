@@ -8,7 +8,8 @@
 namespace {
 const char* kUsage =
     R"(usage: dynslam --config FILE.ini --rawlog FILE.rawlog --out DIR [--set section.key=value]...
-               [--max-frames N] [--frames DIR] [--realtime] [--quiet]
+               [--max-frames N] [--gt GT.tum] [--frames DIR [--no-video]] [--realtime]
+               [--no-map] [--map-every N] [--map-voxel M] [--quiet]
 
 Plays FILE.rawlog (RGB-D CObservation3DRangeScan, CObservationIMU, CObservationGPS; observation
 or action/sensory-frame layout) through the stages listed in [pipeline] stages of FILE.ini, and
@@ -16,8 +17,20 @@ writes in DIR:
   trajectory.tum   camera poses (timestamp tx ty tz qx qy qz qw), written as they are estimated
   objects/ID.tum   the world pose of each object the estimator follows (track id ID), same format
   summary.json     status, counts per observation type, frames, fps, per-stage median times
+                   (and "ape" with --gt)
+  timing.csv       one row per frame: frame,t_s,<stage>_ms for every stage,pipeline_ms
+  map.3Dscene      for SceneViewer3D (MRPT COpenGLScene): "static_map", a coloured point cloud
+                   of the depth outside object masks (one frame in --map-every N, default 10;
+                   one point per --map-voxel M cube, default 0.05 m), "camera_trajectory" (black
+                   polyline) and "object_ID" (the poses of objects/ID.tum, one colour per object)
+--gt GT.tum scores trajectory.tum against a TUM ground truth as `dynslam-eval ape GT.tum
+trajectory.tum --align se3` does (evo's APE, translation, SE(3) Umeyama alignment, stamps
+associated within 0.01 s), prints the RMSE and writes the statistics into summary.json.
 --frames DIR also writes DIR/NNNNNN.png per frame: the colour image with the detector boxes, the
-object masks and the tracks (id, class, depth) drawn on it.
+object masks, the tracks (id, class, depth) and the features by class (green static, orange
+rigid, magenta non-rigid) drawn on it, and the same pictures as the video DIR/annotated.avi
+(Motion-JPEG in AVI, written by OpenCV itself without FFmpeg, at the camera's frame rate;
+--no-video: PNGs only).
 --realtime plays the rawlog at camera rate (frames handed over as their stamps say), as a live
 camera would; with [Detection] mode = realtime the detector thread then runs at the rate it can
 keep, and summary.json gets "realtime" (lag behind the camera) and the detector's rate.
@@ -28,8 +41,9 @@ Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 u
 
 int main(int argc, char** argv) {
   return dynslam::core::runProgram("dynslam", [&] {
-    dynslam::core::CommandLine cl({"--config", "--rawlog", "--out", "--max-frames", "--frames"},
-                                  {"--quiet", "--realtime"}, {"--set"});
+    dynslam::core::CommandLine cl({"--config", "--rawlog", "--out", "--max-frames", "--frames",
+                                   "--gt", "--map-every", "--map-voxel"},
+                                  {"--quiet", "--realtime", "--no-video", "--no-map"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
@@ -44,6 +58,14 @@ int main(int argc, char** argv) {
     args.quiet = cl.has("--quiet");
     args.frames_dir = cl.valueOr("--frames", "");
     args.realtime = cl.has("--realtime");
+    args.frames_video = !cl.has("--no-video");
+    args.ground_truth = cl.valueOr("--gt", "");
+    args.map = !cl.has("--no-map");
+    args.map_every_n_frames =
+        static_cast<int>(cl.optionalInteger("--map-every").value_or(args.map_every_n_frames));
+    args.map_voxel_size = cl.optionalDouble("--map-voxel").value_or(args.map_voxel_size);
+    if (args.map_every_n_frames < 1 || !(args.map_voxel_size > 0))
+      throw dynslam::core::UsageError("--map-every must be >= 1 and --map-voxel > 0");
     return dynslam::runner::runDynslam(args);
   });
 }

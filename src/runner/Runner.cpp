@@ -1,7 +1,10 @@
 #include "Runner.h"
 
 #include <dynslam/core/ProgressReporter.h>
+#include "AnnotatedOutput.h"
 #include "BuiltinStages.h"
+#include "GroundTruthScore.h"
+#include "TimingLog.h"
 
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Pipeline.h>
@@ -10,9 +13,7 @@
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
 #include <dynslam/io/TrajectoryWriter.h>
-#include <dynslam/viz/AnnotatedFrame.h>
-
-#include <opencv2/imgcodecs.hpp>
+#include <dynslam/viz/MapScene.h>
 
 #include <unistd.h>
 #include <algorithm>
@@ -53,6 +54,9 @@ struct RunRecord {
   bool estimator = false;
   std::vector<double> lag_ms;  ///< --realtime: how late each frame reached the pipeline
   std::vector<double> dt_ms;   ///< --realtime: stamp differences between frames
+  std::optional<ApeScore> ape;  ///< --gt
+  std::string ape_error;        ///< --gt given but no score (nothing estimated, nothing associated)
+  size_t map_points = 0;        ///< points in map.3Dscene's static map
 };
 
 /// --realtime: hands frames over on the schedule their stamps give, and records the lag.
@@ -97,6 +101,19 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   j.member("imu_samples", rec.imu_samples).member("gnss_fixes", rec.gnss_fixes);
   j.member("wall_time_s", rec.wall_s);
   j.member("fps", rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
+  if (rec.ape) {
+    const ApeScore& a = *rec.ape;
+    j.key("ape").beginObject();
+    j.member("ground_truth", args.ground_truth).member("alignment", "se3");
+    j.member("pose_relation", "translation_part").member("unit", "m");
+    j.member("pairs", a.pairs).member("max_pairs", a.max_pairs);
+    j.member("rmse", a.rmse).member("mean", a.mean).member("median", a.median);
+    j.member("std", a.std).member("min", a.min).member("max", a.max).member("sse", a.sse);
+    j.endObject();
+  } else if (!rec.ape_error.empty()) {
+    j.member("ape_error", rec.ape_error);
+  }
+  if (args.map) j.member("map_points", rec.map_points);
   if (args.realtime) {
     // A frame is late when it reached the pipeline more than one camera interval after its
     // stamp's due time: the stages (not counting the detector thread) fell behind the camera.
@@ -154,13 +171,19 @@ void appendObjectPose(const std::string& out, int id, const core::StampedPose& p
   if (!file) throw std::runtime_error("cannot write the object trajectory '" + path + "'");
 }
 
-/// DIR/NNNNNN.png: the frame after every stage, as viz::renderAnnotatedFrame draws it.
-void writeAnnotatedFrame(const std::string& dir, const core::Frame& frame) {
-  char name[32];
-  std::snprintf(name, sizeof name, "%06zu.png", frame.index);
-  const std::string path = (fs::path(dir) / name).string();
-  if (!cv::imwrite(path, viz::renderAnnotatedFrame(frame)))
-    throw std::runtime_error("cannot write the annotated frame '" + path + "'");
+/// --gt: the APE of what trajectory.tum holds (read back, as evo would read it).
+void scoreRun(const RunnerArgs& args, const core::Trajectory& ground_truth, size_t poses,
+              RunRecord& rec) {
+  if (poses == 0) {
+    rec.ape_error = "no pose was estimated";
+    return;
+  }
+  try {
+    rec.ape = scoreAgainstGroundTruth(
+        ground_truth, core::readTum((fs::path(args.out) / "trajectory.tum").string()));
+  } catch (const std::exception& e) {
+    rec.ape_error = e.what();
+  }
 }
 
 }  // namespace
@@ -172,6 +195,10 @@ int runDynslam(const RunnerArgs& args) {
   std::optional<io::SensorSync> sync;
   std::optional<io::TumTrajectoryWriter> trajectory;
   std::set<int> objectFiles;  // ids whose objects/<id>.tum this run has created
+  std::optional<AnnotatedOutput> annotated;
+  std::optional<TimingLog> timing;
+  std::optional<viz::MapSceneBuilder> map;
+  core::Trajectory groundTruth;
 
   std::error_code ec;
   fs::create_directories(args.out, ec);
@@ -190,6 +217,14 @@ int runDynslam(const RunnerArgs& args) {
 
   try {
     trajectory.emplace((fs::path(args.out) / "trajectory.tum").string());
+    if (!args.ground_truth.empty()) groundTruth = readGroundTruth(args.ground_truth);
+    if (!args.frames_dir.empty()) annotated.emplace(args.frames_dir, args.frames_video);
+    if (args.map) {
+      viz::MapSceneOptions mapOptions;
+      mapOptions.every_n_frames = args.map_every_n_frames;
+      mapOptions.voxel_size = args.map_voxel_size;
+      map.emplace(mapOptions);
+    }
     const auto cfg = core::IniConfig::fromFile(args.config, args.overrides);
     core::StageRegistry registry;
     registerBuiltinStages(registry);
@@ -200,6 +235,7 @@ int runDynslam(const RunnerArgs& args) {
     known.push_back(io::SensorSync::kSection);
     core::rejectUnknownSections(cfg, known);
     sync.emplace(syncOptions);
+    timing.emplace((fs::path(args.out) / "timing.csv").string(), *pipeline);
     rec.estimator = pipeline->estimatesPose();
     if (!rec.estimator)
       std::cerr << "dynslam: no pose estimator in [pipeline] stages of " << args.config
@@ -225,8 +261,14 @@ int runDynslam(const RunnerArgs& args) {
           break;
         }
         if (args.realtime) cameraRate.waitFor(frame.t, rec);
+        const auto processStart = std::chrono::steady_clock::now();
         pipeline->process(frame);
-        if (!args.frames_dir.empty()) writeAnnotatedFrame(args.frames_dir, frame);
+        timing->append(frame.index, frame.t, *pipeline,
+                       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                                 processStart)
+                           .count());
+        if (annotated) annotated->write(frame);
+        if (map) map->addFrame(frame);
         ++rec.frames;
         rec.imu_samples += frame.imu.size();
         rec.gnss_fixes += frame.gnss.size();
@@ -243,6 +285,7 @@ int runDynslam(const RunnerArgs& args) {
       if (!args.quiet) progress.update(rec.frames, source.progress());
     }
     pipeline->finish();
+    if (annotated) annotated->finish();
     if (g_interrupted) {
       rec.status = "interrupted";
       std::cerr << "\ndynslam: interrupted; outputs hold the first " << rec.frames << " frames\n";
@@ -258,8 +301,33 @@ int runDynslam(const RunnerArgs& args) {
   }
   rec.poses = trajectory ? trajectory->count() : 0;
   rec.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The map holds what was done, also after an error or Ctrl-C (like trajectory.tum); its
+  // saving is not part of the frame rate.
+  if (map) {
+    const std::string mapPath = (fs::path(args.out) / "map.3Dscene").string();
+    try {
+      map->save(mapPath);
+      rec.map_points = map->pointCount();
+    } catch (const std::exception& e) {
+      std::cerr << "dynslam: error: " << e.what() << "\n";
+      if (rec.status == "ok") {
+        rec.status = "failed";
+        rec.error = e.what();
+      }
+    }
+  }
+  if (!args.ground_truth.empty() && !groundTruth.empty())
+    scoreRun(args, groundTruth, rec.poses, rec);
   writeSummary(summaryPath, args, rec, sync ? &*sync : nullptr, pipeline ? &*pipeline : nullptr);
   std::cerr << "dynslam: wrote " << summaryPath << "\n";
+  std::printf("dynslam: %zu frames, %zu poses in %.1f s (%.1f FPS)\n", rec.frames, rec.poses,
+              rec.wall_s, rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
+  if (rec.ape)
+    std::printf("dynslam: APE RMSE %.4f m (SE(3)-aligned, %zu of %zu poses associated) vs %s\n",
+                rec.ape->rmse, rec.ape->pairs, rec.ape->max_pairs, args.ground_truth.c_str());
+  else if (!rec.ape_error.empty())
+    std::printf("dynslam: no APE: %s\n", rec.ape_error.c_str());
+  std::fflush(stdout);
   return rec.status == "failed" ? 1 : (rec.status == "interrupted" ? 130 : 0);
 }
 

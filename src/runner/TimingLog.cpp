@@ -1,0 +1,29 @@
+#include "TimingLog.h"
+
+#include <dynslam/core/Pipeline.h>
+
+#include <iomanip>
+#include <stdexcept>
+
+namespace dynslam::runner {
+
+TimingLog::TimingLog(const std::string& path, const core::Pipeline& pipeline)
+    : path_(path), out_(path, std::ios::trunc) {
+  out_ << "frame,t_s";
+  for (const auto& stage : pipeline.times()) out_ << ',' << stage.name << "_ms";
+  out_ << ",pipeline_ms\n";
+  if (!out_) throw std::runtime_error("cannot write the timing log '" + path + "'");
+}
+
+void TimingLog::append(std::size_t frame, double t, const core::Pipeline& pipeline,
+                       double pipeline_ms) {
+  out_ << frame << ',' << std::fixed << std::setprecision(6) << t << std::setprecision(3);
+  for (const auto& stage : pipeline.times())
+    out_ << ',' << (stage.ms.empty() ? 0.0 : stage.ms.back());
+  out_ << ',' << pipeline_ms << '\n';
+  // Flushed now and then rather than per row: a crash loses at most a few rows of timing.
+  if (frame % 100 == 0) out_.flush();
+  if (!out_) throw std::runtime_error("cannot write the timing log '" + path_ + "'");
+}
+
+}  // namespace dynslam::runner
