@@ -28,7 +28,7 @@ namespace {
 
 constexpr Nanoseconds kSecond = 1000000000;
 
-enum class Role { Colour, Depth, Imu, Accel, Gyro, Gnss };
+enum class Role { Colour, Depth, Imu, Accel, Gyro, Gnss, Nmea };
 
 Nanoseconds toNanoseconds(double seconds) {
   return static_cast<Nanoseconds>(seconds * static_cast<double>(kSecond));
@@ -162,10 +162,16 @@ class Converter {
           ++summary_.gnssWithoutFix;
           break;
         }
-        if (gnssPose_) gps->sensorPose = toPose(*gnssPose_);
-        const Nanoseconds t = stampOf(*gps);
-        see(t);
-        ordered_.add(t, gps);
+        addGnss(gps);
+        break;
+      }
+      case Role::Nmea: {
+        auto gps = readNmeaSentence(m, kGpsLabel);
+        if (!gps) {
+          ++summary_.nmeaSkipped;
+          break;
+        }
+        addGnss(gps);
         break;
       }
     }
@@ -191,6 +197,13 @@ class Converter {
   }
 
   void see(Nanoseconds t) { newest_ = std::max(newest_, t); }
+
+  void addGnss(const std::shared_ptr<mrpt::obs::CObservationGPS>& gps) {
+    if (gnssPose_) gps->sensorPose = toPose(*gnssPose_);
+    const Nanoseconds t = stampOf(*gps);
+    see(t);
+    ordered_.add(t, gps);
+  }
 
   void drain(bool end) {
     for (auto& [colour, depth] : pairer_.takeReady(newest_, window_, end))
@@ -276,6 +289,7 @@ ConversionSummary convertBag(const std::string& bagPath, const TopicMap& topics,
   map("accel_topic", topics.accel_topic, Role::Accel);
   map("gyro_topic", topics.gyro_topic, Role::Gyro);
   map("gnss_topic", topics.gnss_topic, Role::Gnss);
+  map("nmea_topic", topics.nmea_topic, Role::Nmea);
   if (!topics.camera_info_topic.empty())
     checkTopic(inBag, bagPath, topicsSource, "camera_info_topic", topics.camera_info_topic);
   const CameraIntrinsics intrinsics =

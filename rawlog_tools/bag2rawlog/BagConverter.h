@@ -23,6 +23,7 @@ struct ConversionSummary {
   size_t droppedGyro = 0;     ///< gyro samples outside the accelerometer's time span
   size_t outOfOrderImu = 0;   ///< accel/gyro samples whose stamp did not increase
   size_t gnssWithoutFix = 0;  ///< NavSatFix with status NO_FIX or non-finite coordinates
+  size_t nmeaSkipped = 0;     ///< NMEA sentences MRPT's parser does not recognise
   size_t late = 0;            ///< observations beyond the reorder window (not written)
 };
 

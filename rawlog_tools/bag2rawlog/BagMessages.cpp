@@ -1,8 +1,11 @@
 #include "BagMessages.h"
 
+#include "NmeaSentence.h"
+
 #include <cv_bridge/cv_bridge.h>
 #include <dynslam/rawlog_tools/ConversionError.h>
 #include <dynslam/rawlog_tools/Timestamps.h>
+#include <mrpt/hwdrivers/CGPSInterface.h>
 #include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/ros1bridge/gps.h>
@@ -59,6 +62,7 @@ std::vector<std::string> acceptedTypes(const std::string& role) {
   if (role == "rgb_topic" || role == "depth_topic") return {kImage, kCompressed};
   if (role == "camera_info_topic") return {"sensor_msgs/CameraInfo"};
   if (role == "gnss_topic") return {"sensor_msgs/NavSatFix"};
+  if (role == "nmea_topic") return {"nmea_msgs/Sentence"};
   return {"sensor_msgs/Imu"};  // imu_topic, accel_topic, gyro_topic
 }
 
@@ -198,6 +202,20 @@ std::shared_ptr<mrpt::obs::CObservationGPS> readNavSatFix(const rosbag::MessageI
   gga.UTCTime.hour = static_cast<uint8_t>(parts.hour);
   gga.UTCTime.minute = static_cast<uint8_t>(parts.minute);
   gga.UTCTime.sec = parts.second;
+  return obs;
+}
+
+std::shared_ptr<mrpt::obs::CObservationGPS> readNmeaSentence(const rosbag::MessageInstance& m,
+                                                             const std::string& label) {
+  const auto msg = instantiate<nmea_msgs::Sentence>(m);
+  auto obs = std::make_shared<mrpt::obs::CObservationGPS>();
+  std::string line = msg->sentence;
+  while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.pop_back();
+  if (!mrpt::hwdrivers::CGPSInterface::parse_NMEA(line, *obs)) return nullptr;
+  // The parser stamps with the current time (a sentence alone has no date).
+  obs->timestamp = timeFromNanoseconds(nanoseconds(msg->header.stamp));
+  obs->originalReceivedTimestamp = obs->timestamp;
+  obs->sensorLabel = label;
   return obs;
 }
 

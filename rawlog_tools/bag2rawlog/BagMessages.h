@@ -75,4 +75,10 @@ Vector3Sample readGyro(const rosbag::MessageInstance& m);
 std::shared_ptr<mrpt::obs::CObservationGPS> readNavSatFix(const rosbag::MessageInstance& m,
                                                           const std::string& label);
 
+/// An nmea_msgs/Sentence parsed by MRPT's NMEA parser (CGPSInterface::parse_NMEA: GGA, RMC,
+/// GLL, VTG, GSA, ZDA), stamped with the header's stamp; nullptr for a sentence it does not
+/// recognise or whose checksum fails (skipped; the caller counts them).
+std::shared_ptr<mrpt::obs::CObservationGPS> readNmeaSentence(const rosbag::MessageInstance& m,
+                                                             const std::string& label);
+
 }  // namespace dynslam::rawlog_tools::bag

@@ -28,6 +28,7 @@ void TopicMap::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const 
   str(accel_topic, "accel_topic");
   str(gyro_topic, "gyro_topic");
   str(gnss_topic, "gnss_topic");
+  str(nmea_topic, "nmea_topic");
   str(camera_pose, "camera_pose");
   str(imu_pose, "imu_pose");
   str(gnss_pose, "gnss_pose");
@@ -52,6 +53,8 @@ void TopicMap::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::str
            "sensor_msgs/Imu, accelerometer only (interpolated at gyro_topic's stamps)");
   writeKey(c, s, "gyro_topic", gyro_topic, "sensor_msgs/Imu, gyro only");
   writeKey(c, s, "gnss_topic", gnss_topic, "sensor_msgs/NavSatFix (written as a GGA message)");
+  writeKey(c, s, "nmea_topic", nmea_topic,
+           "nmea_msgs/Sentence: NMEA 0183 sentences parsed by MRPT (GGA, RMC, ...)");
   writeKey(c, s, "camera_pose", camera_pose,
            "colour optical frame on the body: x y z qx qy qz qw (empty: MRPT default)");
   writeKey(c, s, "imu_pose", imu_pose, "IMU axes on the body: x y z qx qy qz qw");
@@ -64,9 +67,9 @@ void TopicMap::validate(const std::string& source) const {
   const std::string where = source + " [" + kSection + "] ";
   auto fail = [&](const std::string& what) { throw ConversionError(where + what); };
   if (rgb_topic.empty() && depth_topic.empty() && imu_topic.empty() && accel_topic.empty() &&
-      gyro_topic.empty() && gnss_topic.empty())
+      gyro_topic.empty() && gnss_topic.empty() && nmea_topic.empty())
     fail("names no topic to convert (rgb_topic, depth_topic, imu_topic, accel_topic, " +
-         std::string("gyro_topic, gnss_topic)"));
+         std::string("gyro_topic, gnss_topic, nmea_topic)"));
   if (rgb_topic.empty() != depth_topic.empty())
     fail("rgb_topic and depth_topic go together (RGB-D observations need both)");
   if (!imu_topic.empty() && (!accel_topic.empty() || !gyro_topic.empty()))

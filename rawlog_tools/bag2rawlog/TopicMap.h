@@ -24,6 +24,7 @@ struct TopicMap : mrpt::config::CLoadableOptions {
   std::string accel_topic;      ///< sensor_msgs/Imu, accelerometer only (RealSense)
   std::string gyro_topic;       ///< sensor_msgs/Imu, gyro only (RealSense)
   std::string gnss_topic;       ///< sensor_msgs/NavSatFix
+  std::string nmea_topic;       ///< nmea_msgs/Sentence (raw NMEA 0183 receiver output)
   std::string camera_pose;      ///< T_body_optical "x y z qx qy qz qw"; empty: MRPT default
   std::string imu_pose;         ///< T_body_imu "x y z qx qy qz qw"; empty: identity
   std::string gnss_pose;        ///< antenna on the body "x y z qx qy qz qw"; empty: identity

@@ -27,6 +27,7 @@ Converts a ROS 1 bag into an MRPT rawlog, written in header-stamp order:
   imu_topic, or accel_topic + gyro_topic -> CObservationIMU "IMU" (split RealSense streams:
       one sample per gyro message, accelerometer interpolated at its stamp)
   gnss_topic (NavSatFix) -> CObservationGPS "GPS" with an NMEA GGA message
+  nmea_topic (nmea_msgs/Sentence) -> CObservationGPS "GPS" as MRPT's NMEA parser reads it
 Colour images go to <stem>_Images/ beside the rawlog (compressed images byte for byte, raw
 images as PNG). Example topic maps: params/bag2rawlog/*.ini; every key is listed with
 --print-topics-template.
@@ -76,6 +77,7 @@ int run(const CommandLine& args) {
   note(s.droppedGyro, "gyro samples lay outside the accelerometer's time span (not written)");
   note(s.outOfOrderImu, "accel/gyro samples did not increase in stamp (not written)");
   note(s.gnssWithoutFix, "NavSatFix messages had no fix (not written)");
+  note(s.nmeaSkipped, "NMEA sentences were not recognised by MRPT's parser (not written)");
   note(s.late, "observations came later than reorder_window (not written; raise it)");
   if (writer.written() == 0) {
     std::cerr << "bag2rawlog: error: no observation was written\n";

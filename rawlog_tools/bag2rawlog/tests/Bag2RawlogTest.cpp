@@ -230,3 +230,25 @@ TEST(Bag2Rawlog, CompressedDepthPngIsReadInMillimetres) {
   for (int i = 0; i < kFrames; ++i) expectDepthMetres(back.frames[i].depth, i);
   EXPECT_TRUE(back.imu.empty());
 }
+
+TEST(Bag2Rawlog, NmeaSentencesBecomeGgaFixes) {
+  const std::string dir = dynslam::testing::scratchDir();
+  const Conversion c = convert(dir, "[bag2rawlog]\nnmea_topic = /gps/nmea\n");
+  ASSERT_EQ(c.result.exit_code, 0) << c.result.output;
+  EXPECT_NE(c.result.output.find("1 NMEA sentences were not recognised"), std::string::npos)
+      << c.result.output;
+  const ReadBack back = readBack(c.rawlog);
+  ASSERT_EQ(back.gnss.size(), 2u);
+  const auto lines = nmeaSentences();
+  for (size_t k = 0; k < 2; ++k) {
+    const NmeaLine& e = lines[k == 0 ? 0 : 2];
+    EXPECT_NEAR(back.gnss[k].t, e.t, 1e-6);  // the header's stamp, not the parse time
+    EXPECT_NEAR(back.gnss[k].latitude_deg, e.latitude, 1e-9);
+    EXPECT_NEAR(back.gnss[k].longitude_deg, e.longitude, 1e-9);
+  }
+  EXPECT_EQ(back.gnss[0].fix_quality, 1);
+  EXPECT_EQ(back.gnss[1].fix_quality, 2);
+  EXPECT_EQ(back.gnss[0].satellites, 8);
+  EXPECT_NEAR(back.gnss[1].hdop, 1.1, 1e-6);
+  EXPECT_NEAR(back.gnss[0].altitude_m, 519.5, 1e-9);
+}

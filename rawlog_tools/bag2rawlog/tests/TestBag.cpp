@@ -1,5 +1,7 @@
 #include "TestBag.h"
 
+#include "NmeaSentence.h"
+
 #include <rosbag/bag.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/CompressedImage.h>
@@ -102,6 +104,23 @@ std::vector<Fix> fixes() {
           {kT0 + 0.22, 48.137201, 11.576301, 520.25, true}};
 }
 
+std::vector<NmeaLine> nmeaSentences() {
+  auto withChecksum = [](const std::string& body) {
+    unsigned sum = 0;
+    for (char ch : body) sum ^= static_cast<unsigned char>(ch);
+    char tail[8];
+    std::snprintf(tail, sizeof tail, "*%02X\r\n", sum);
+    return "$" + body + tail;
+  };
+  return {{kT0 + 0.05,
+           withChecksum("GPGGA,132000.05,4808.2292,N,01134.5674,E,1,08,0.9,519.5,M,47.0,M,,"),
+           48.0 + 8.2292 / 60.0, 11.0 + 34.5674 / 60.0},
+          {kT0 + 0.10, withChecksum("GPXYZ,1,2,3"), 0, 0},
+          {kT0 + 0.15,
+           withChecksum("GPGGA,132000.15,4808.2310,S,01134.5690,W,2,09,1.1,519.7,M,47.0,M,,"),
+           -(48.0 + 8.2310 / 60.0), -(11.0 + 34.5690 / 60.0)}};
+}
+
 std::vector<uint8_t> compressedBytes(int frame) {
   std::vector<uint8_t> bytes;
   cv::imencode(frame % 2 ? ".jpg" : ".png", expectedBgr(frame), bytes);
@@ -139,6 +158,12 @@ void writeTestBag(const std::string& path) {
     msg.longitude = f.longitude;
     msg.altitude = f.altitude;
     bag.write("/gps/fix", recorded(f.t, 0.01), msg);
+  }
+  for (const NmeaLine& line : nmeaSentences()) {
+    nmea_msgs::Sentence msg;
+    msg.header = header(line.t, "gps");
+    msg.sentence = line.sentence;
+    bag.write("/gps/nmea", recorded(line.t, 0.01), msg);
   }
   for (int i = 0; i < kFrames; ++i) {
     const double t = colourStamp(i), td = t + 0.003;

@@ -10,6 +10,7 @@
 //   /imu                              Imu, gyro + accel, 200 Hz
 //   /accel/sample, /gyro/sample       split Imu streams, 100 Hz and 200 Hz (RealSense)
 //   /gps/fix                          NavSatFix: 2 fixes and one NO_FIX
+//   /gps/nmea                         nmea_msgs/Sentence: nmeaSentences()
 // Messages are recorded later than their header stamps (images 40 ms), as a real recorder does.
 #include <opencv2/core/mat.hpp>
 
@@ -39,6 +40,14 @@ struct Fix {
   bool valid;
 };
 std::vector<Fix> fixes();
+
+/// NMEA sentences on /gps/nmea: two GGA (with checksums) and one no parser knows.
+struct NmeaLine {
+  double t;
+  std::string sentence;
+  double latitude, longitude;  ///< of a GGA sentence, in degrees
+};
+std::vector<NmeaLine> nmeaSentences();
 
 /// The JPEG bytes of frame `frame` as written to the compressed topic (odd frames are JPEG).
 std::vector<uint8_t> compressedBytes(int frame);
