@@ -103,7 +103,6 @@ void draw(const std::string& path, const std::string& title, const std::string& 
   cv::rectangle(img, cv::Point(px0, py1), cv::Point(px1, py0), kBlack, 1);
   text(img, title, {px0, 22}, 0.6);
   text(img, xLabel + (numeric ? "" : " (categories)"), {(px0 + px1) / 2 - 80, kHeight - 20}, 0.5);
-  text(img, "APE RMSE (m)", {8, kTop - 6}, 0.45);
 
   for (size_t s = 0; s < series.size(); ++s) {
     const cv::Scalar colour = seriesColour(s);
@@ -175,8 +174,9 @@ std::vector<std::string> writeSweepPlots(const SweepSpec& spec,
     }
     const std::string path = (fs::path(spec.out) / ("plot_" + key.name() + ".png")).string();
     draw(path,
-         "APE RMSE against " + key.name() + " (median over " + std::to_string(spec.rawlogs.size()) +
-             " rawlog" + (spec.rawlogs.size() > 1 ? "s)" : ")"),
+         "APE RMSE (m) against " + key.name() + " (median over " +
+             std::to_string(spec.rawlogs.size()) + " rawlog" +
+             (spec.rawlogs.size() > 1 ? "s)" : ")"),
          key.name(), key.values, series);
     paths.push_back(path);
   }

@@ -136,10 +136,15 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
       if (!jobCompleted(job.dir)) pending.push_back(&job);
   }
   const size_t skipped = cl.has("--collect") ? 0 : jobs.size() - pending.size();
-  std::cerr << "dynslam-sweep: " << jobs.size() << " jobs (" << jobs.size() / spec.rawlogs.size()
-            << " combinations x " << spec.rawlogs.size() << " rawlogs); skipped " << skipped
-            << " already done; running " << pending.size() << " on " << jobsFlag << " process"
-            << (jobsFlag > 1 ? "es" : "") << "\n";
+  const std::string shape = std::to_string(jobs.size()) + " jobs (" +
+                            std::to_string(jobs.size() / spec.rawlogs.size()) + " combinations x " +
+                            std::to_string(spec.rawlogs.size()) + " rawlogs)";
+  if (cl.has("--collect"))
+    std::cerr << "dynslam-sweep: collecting " << shape << " from " << spec.out << "/jobs\n";
+  else
+    std::cerr << "dynslam-sweep: " << shape << "; skipped " << skipped << " already done; running "
+              << pending.size() << " on " << jobsFlag << " process" << (jobsFlag > 1 ? "es" : "")
+              << "\n";
 
   bool interrupted = false;
   size_t ran = 0, failedRuns = 0;
