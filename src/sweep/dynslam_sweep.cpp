@@ -42,8 +42,8 @@ DIR/plot_<Section.key>.png (APE RMSE against each swept key's values).
 
 Resumable: a job whose folder holds a summary.json with "status": "ok" is not run again (also
 by the job-list lines); a failed or interrupted one is. Progress goes to stderr.
-Before running, one job is tried on one frame, so an unknown Section.key, section or stage
-stops the sweep with dynslam's own message instead of failing every job.
+Before the first job of a new sweep runs, it is tried on one frame, so an unknown Section.key,
+section or stage stops the sweep with dynslam's own message instead of failing every job.
 Exit codes: 0 every job ok, 1 some job failed or bad input (results.csv still written for the
 jobs), 2 usage (a bad --grid names the part), 130 Ctrl-C.
 )";
@@ -76,7 +76,9 @@ void checkConfiguration(const SweepSpec& spec, const Job& job) {
   if (!o.ok)
     throw std::runtime_error(
         "dynslam rejects the job " + job.name + " (--set " + joined(job.overrides, " --set ") +
-        ") on its first frame: " + o.reason + " (log: " + dir + "/dynslam.log)");
+        ") on its first frame: " + o.reason + " (log: " + dir +
+        "/dynslam.log; if only this job's value is bad, --no-check runs every job and reports "
+        "this one as failed)");
 }
 
 int emit(const SweepSpec& spec, const std::vector<Job>& jobs, const std::string& mode,
@@ -123,8 +125,21 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
 
   fs::create_directories(spec.out);
   const std::vector<Job> jobs = makeJobs(spec);
-  if (!mode.empty())
+  if (!mode.empty()) {
+    // The job list may be meant for other hosts, where the paths lead elsewhere: the
+    // configuration is checked here only when everything it names is on this machine too.
+    std::string absent;
+    for (const auto& path : {spec.config, spec.rawlogs.front(), spec.dynslam})
+      if (absent.empty() && !fs::is_regular_file(path)) absent = path;
+    if (cl.has("--no-check")) {
+    } else if (absent.empty()) {
+      checkConfiguration(spec, jobs.front());
+    } else {
+      std::cerr << "dynslam-sweep: configuration not checked: '" << absent
+                << "' is not on this machine\n";
+    }
     return emit(spec, jobs, mode, cl.has("--jobs") ? static_cast<int>(jobsFlag) : 0);
+  }
 
   std::vector<const Job*> pending;
   if (!cl.has("--collect")) {
@@ -149,7 +164,10 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
   bool interrupted = false;
   size_t ran = 0, failedRuns = 0;
   if (!pending.empty()) {
-    if (!cl.has("--no-check")) checkConfiguration(spec, *pending.front());
+    // Keys and sections are the same in every job: once one job has succeeded they are known
+    // good, and the check would only stop the sweep on a job whose own value is bad.
+    const bool someJobSucceeded = pending.size() < jobs.size();
+    if (!cl.has("--no-check") && !someJobSucceeded) checkConfiguration(spec, *pending.front());
     interrupted = !runLocally(
         spec, pending, static_cast<int>(jobsFlag), [&](const Job& job, const JobOutcome& o) {
           ++ran;

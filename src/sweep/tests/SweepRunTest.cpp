@@ -133,6 +133,22 @@ TEST(DynslamSweep, BadInputStopsWithAClearMessage) {
       << r.output;
 }
 
+TEST(DynslamSweep, AFailingJobIsARowWithItsReasonAndRunsAgainNextTime) {
+  const std::string out = dynslam::testing::scratchDir("failing");
+  const std::string grid = "RgbdOdometry.method=rgbd_icp,no_such_method";
+  auto r = runCommand(sweepCommand(out, grid));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAILED sim__RgbdOdometry.method=no_such_method"), std::string::npos)
+      << r.output;
+  const auto rows = csvRows(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const std::string csv = readTextFile(out + "/results.csv");
+  EXPECT_NE(csv.find(",failed,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("no_such_method"), std::string::npos) << csv;
+  r = runCommand(sweepCommand(out, grid));
+  EXPECT_NE(r.output.find("ran 1, skipped 1"), std::string::npos) << r.output;
+}
+
 TEST(DynslamSweep, EmittedJobListRunsElsewhereAndIsCollectedLater) {
   const std::string out = dynslam::testing::scratchDir("emit");
   auto r = runCommand(sweepCommand(out, kGrid, "--emit slurm"));
