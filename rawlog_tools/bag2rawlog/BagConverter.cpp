@@ -8,6 +8,7 @@
 #include <dynslam/rawlog_tools/RawlogWriter.h>
 #include <dynslam/rawlog_tools/SensorLabels.h>
 #include <dynslam/rawlog_tools/Timestamps.h>
+#include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
@@ -16,10 +17,12 @@
 #include <rosbag/view.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace fs = std::filesystem;
 
@@ -68,17 +71,16 @@ void checkTopic(const std::map<std::string, std::string>& inBag, const std::stri
   }
 }
 
-CameraIntrinsics intrinsicsFrom(const rosbag::Bag& bag, const TopicMap& topics,
-                                const std::string& bagPath) {
-  CameraIntrinsics intrinsics;
-  if (topics.camera_info_topic.empty()) {
-    intrinsics.k = {topics.fx, topics.fy, topics.cx, topics.cy};
-    return intrinsics;
-  }
-  rosbag::View view(bag, rosbag::TopicQuery(topics.camera_info_topic));
+/// The first CameraInfo of `topic` (the cameras are assumed fixed for the whole bag).
+CameraIntrinsics firstCameraInfo(const rosbag::Bag& bag, const std::string& key,
+                                 const std::string& topic, const std::string& bagPath) {
+  rosbag::View view(bag, rosbag::TopicQuery(topic));
   for (const rosbag::MessageInstance& m : view) return readCameraInfo(m);
-  throw ConversionError("camera_info_topic " + topics.camera_info_topic + " has no messages in " +
-                        bagPath);
+  throw ConversionError(key + " " + topic + " has no messages in " + bagPath);
+}
+
+void setDistortion(mrpt::img::TCamera& camera, const std::array<double, 5>& d) {
+  for (size_t i = 0; i < d.size(); ++i) camera.dist[i] = d[i];
 }
 
 /// Puts a colour image where the rawlog expects it: compressed bytes are kept as they are
@@ -110,17 +112,27 @@ mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
 
 class Converter {
  public:
-  Converter(const TopicMap& topics, const CameraIntrinsics& intrinsics, ColourImageStore& images,
+  Converter(const TopicMap& topics, const CameraIntrinsics& intrinsics,
+            const std::optional<CameraIntrinsics>& depthCamera, ColourImageStore& images,
             RawlogWriter& writer)
       : topics_(topics),
         intrinsics_(intrinsics),
+        depthCamera_(depthCamera),
         images_(images),
         out_(writer),
         pairer_(toNanoseconds(topics.rgbd_max_dt)),
         window_(toNanoseconds(topics.reorder_window)),
         cameraPose_(parsePose(topics.camera_pose, "camera_pose")),
         imuPose_(parsePose(topics.imu_pose, "imu_pose")),
-        gnssPose_(parsePose(topics.gnss_pose, "gnss_pose")) {}
+        gnssPose_(parsePose(topics.gnss_pose, "gnss_pose")) {
+    const auto T_colour_depth = parsePose(topics.depth_to_colour_pose, "depth_to_colour_pose");
+    // Colour optical frame in MRPT's depth frame (+X forward): the depth optical axes, then
+    // the colour camera seen from the depth camera.
+    const mrpt::poses::CPose3D opticalInDepth(0, 0, 0, mrpt::DEG2RAD(-90.0), 0,
+                                              mrpt::DEG2RAD(-90.0));
+    colourInDepth_ = opticalInDepth +
+                     (T_colour_depth ? toPose(T_colour_depth->inverse()) : mrpt::poses::CPose3D());
+  }
 
   void handle(Role role, const rosbag::MessageInstance& m) {
     switch (role) {
@@ -237,20 +249,48 @@ class Converter {
     frame.rangeUnits = depth.rangeUnits;
     frame.maxRange = static_cast<float>(topics_.max_depth);
     frame.intrinsics = intrinsics_.k;
-    frame.depthSourceName = topics_.depth_topic + " at " + stampName(depth.stamp) +
-                            " (must be registered to colour: use the aligned depth topic)";
+    frame.depthSourceName =
+        topics_.depth_topic + " at " + stampName(depth.stamp) +
+        (depthCamera_ ? ""
+                      : " (must be registered to colour: use the aligned depth topic, or set "
+                        "depth_camera_info_topic)");
     frame.colour = storeColour(images_, colour);
-    auto obs = makeRgbdObservation(frame);
-    for (size_t i = 0; i < intrinsics_.distortion.size(); ++i) {
-      obs->cameraParams.dist[i] = intrinsics_.distortion[i];
-      obs->cameraParamsIntensity.dist[i] = intrinsics_.distortion[i];
+    if (!depthCamera_) {
+      auto obs = makeRgbdObservation(frame);
+      setDistortion(obs->cameraParams, intrinsics_.distortion);
+      setDistortion(obs->cameraParamsIntensity, intrinsics_.distortion);
+      if (cameraPose_) setCameraPoseOnBody(*obs, *cameraPose_);
+      return obs;
     }
+    if (depthCamera_->width > 0 &&
+        (depthCamera_->width != depth.depth.cols || depthCamera_->height != depth.depth.rows))
+      throw ConversionError(frame.depthSourceName + " is " + std::to_string(depth.depth.cols) +
+                            "x" + std::to_string(depth.depth.rows) + " but " +
+                            topics_.depth_camera_info_topic + " is for " +
+                            std::to_string(depthCamera_->width) + "x" +
+                            std::to_string(depthCamera_->height));
+    // makeRgbdObservation builds registered frames (one camera, one size): it is given the depth
+    // size, and the colour camera's own size, the depth camera and the pose between them are
+    // put in afterwards. dynslam::io registers such depth to colour when reading.
+    const StoredColourImage colourImage = frame.colour;
+    frame.colour.width = depth.depth.cols;
+    frame.colour.height = depth.depth.rows;
+    auto obs = makeRgbdObservation(frame);
+    const PinholeIntrinsics& dk = depthCamera_->k;
+    obs->cameraParams.setIntrinsicParamsFromValues(dk.fx, dk.fy, dk.cx, dk.cy);
+    setDistortion(obs->cameraParams, depthCamera_->distortion);
+    obs->cameraParamsIntensity.ncols = static_cast<uint32_t>(colourImage.width);
+    obs->cameraParamsIntensity.nrows = static_cast<uint32_t>(colourImage.height);
+    setDistortion(obs->cameraParamsIntensity, intrinsics_.distortion);
+    obs->relativePoseIntensityWRTDepth = colourInDepth_;
     if (cameraPose_) setCameraPoseOnBody(*obs, *cameraPose_);
     return obs;
   }
 
   const TopicMap& topics_;
   CameraIntrinsics intrinsics_;
+  std::optional<CameraIntrinsics> depthCamera_;
+  mrpt::poses::CPose3D colourInDepth_;
   ColourImageStore& images_;
   RawlogWriter& out_;
   TimeOrderedWriter ordered_{out_};
@@ -290,16 +330,24 @@ ConversionSummary convertBag(const std::string& bagPath, const TopicMap& topics,
   map("gyro_topic", topics.gyro_topic, Role::Gyro);
   map("gnss_topic", topics.gnss_topic, Role::Gnss);
   map("nmea_topic", topics.nmea_topic, Role::Nmea);
-  if (!topics.camera_info_topic.empty())
+  CameraIntrinsics intrinsics;
+  intrinsics.k = {topics.fx, topics.fy, topics.cx, topics.cy};
+  std::optional<CameraIntrinsics> depthCamera;
+  if (topics.hasRgbd() && !topics.camera_info_topic.empty()) {
     checkTopic(inBag, bagPath, topicsSource, "camera_info_topic", topics.camera_info_topic);
-  const CameraIntrinsics intrinsics =
-      topics.hasRgbd() ? intrinsicsFrom(bag, topics, bagPath) : CameraIntrinsics{};
+    intrinsics = firstCameraInfo(bag, "camera_info_topic", topics.camera_info_topic, bagPath);
+  }
+  if (topics.hasRgbd() && !topics.depthRegistered()) {
+    const std::string& topic = topics.depth_camera_info_topic;
+    checkTopic(inBag, bagPath, topicsSource, "depth_camera_info_topic", topic);
+    depthCamera = firstCameraInfo(bag, "depth_camera_info_topic", topic, bagPath);
+  }
 
   std::vector<std::string> topicList;
   for (const auto& [topic, role] : roles) topicList.push_back(topic);
   rosbag::View view(bag, rosbag::TopicQuery(topicList));
   const size_t total = view.size();
-  Converter converter(topics, intrinsics, images, writer);
+  Converter converter(topics, intrinsics, depthCamera, images, writer);
   using Clock = std::chrono::steady_clock;
   auto lastReport = Clock::now();
   size_t done = 0;

@@ -60,7 +60,8 @@ std::string extensionOf(const std::vector<uint8_t>& bytes) {
 
 std::vector<std::string> acceptedTypes(const std::string& role) {
   if (role == "rgb_topic" || role == "depth_topic") return {kImage, kCompressed};
-  if (role == "camera_info_topic") return {"sensor_msgs/CameraInfo"};
+  if (role == "camera_info_topic" || role == "depth_camera_info_topic")
+    return {"sensor_msgs/CameraInfo"};
   if (role == "gnss_topic") return {"sensor_msgs/NavSatFix"};
   if (role == "nmea_topic") return {"nmea_msgs/Sentence"};
   return {"sensor_msgs/Imu"};  // imu_topic, accel_topic, gyro_topic

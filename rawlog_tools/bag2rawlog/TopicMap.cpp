@@ -21,6 +21,8 @@ void TopicMap::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const 
   num(fy, "fy");
   num(cx, "cx");
   num(cy, "cy");
+  str(depth_camera_info_topic, "depth_camera_info_topic");
+  str(depth_to_colour_pose, "depth_to_colour_pose");
   num(depth_unit, "depth_unit");
   num(max_depth, "max_depth");
   num(rgbd_max_dt, "rgbd_max_dt");
@@ -45,6 +47,10 @@ void TopicMap::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::str
   writeKey(c, s, "fy", fy, "colour focal length y (px)");
   writeKey(c, s, "cx", cx, "colour principal point x (px)");
   writeKey(c, s, "cy", cy, "colour principal point y (px)");
+  writeKey(c, s, "depth_camera_info_topic", depth_camera_info_topic,
+           "CameraInfo of a depth camera not registered to colour (empty: registered)");
+  writeKey(c, s, "depth_to_colour_pose", depth_to_colour_pose,
+           "that depth optical frame in the colour optical frame: x y z qx qy qz qw");
   writeKey(c, s, "depth_unit", depth_unit, "metres per unit of a 16-bit depth image");
   writeKey(c, s, "max_depth", max_depth, "maxRange of the RGB-D observations (m)");
   writeKey(c, s, "rgbd_max_dt", rgbd_max_dt, "largest colour-depth stamp difference paired (s)");
@@ -78,6 +84,8 @@ void TopicMap::validate(const std::string& source) const {
     fail("accel_topic and gyro_topic go together (one IMU observation per gyro sample)");
   if (hasRgbd() && camera_info_topic.empty() && (fx <= 0 || fy <= 0 || cx <= 0 || cy <= 0))
     fail("needs camera_info_topic or fx, fy, cx, cy > 0 for the colour camera");
+  if (!depth_to_colour_pose.empty() && depth_camera_info_topic.empty())
+    fail("depth_to_colour_pose needs depth_camera_info_topic (the depth camera's intrinsics)");
   if (!(rgbd_max_dt > 0)) fail("rgbd_max_dt must be > 0");
   if (!(depth_unit > 0)) fail("depth_unit must be > 0");
   if (!(max_depth > 0)) fail("max_depth must be > 0");
@@ -85,6 +93,7 @@ void TopicMap::validate(const std::string& source) const {
   parsePose(camera_pose, where + "camera_pose");
   parsePose(imu_pose, where + "imu_pose");
   parsePose(gnss_pose, where + "gnss_pose");
+  parsePose(depth_to_colour_pose, where + "depth_to_colour_pose");
 }
 
 std::optional<Eigen::Isometry3d> parsePose(const std::string& text, const std::string& key) {

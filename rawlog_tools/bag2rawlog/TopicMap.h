@@ -17,6 +17,10 @@ struct TopicMap : mrpt::config::CLoadableOptions {
   std::string depth_topic;        ///< sensor_msgs/Image (16UC1, mono16, 32FC1) or compressedDepth
   std::string camera_info_topic;  ///< sensor_msgs/CameraInfo; else fx fy cx cy below
   double fx = 0, fy = 0, cx = 0, cy = 0;
+  /// Depth not registered to colour (RealSense SDK recordings): the depth camera's CameraInfo
+  /// and its optical frame in the colour optical frame (T_colour_depth, x y z qx qy qz qw).
+  std::string depth_camera_info_topic;
+  std::string depth_to_colour_pose;
   double depth_unit = 0.001;    ///< metres per unit of a 16-bit depth image
   double max_depth = 10.0;      ///< CObservation3DRangeScan::maxRange (m)
   double rgbd_max_dt = 0.02;    ///< colour/depth pairs further apart (s) are not paired
@@ -39,6 +43,7 @@ struct TopicMap : mrpt::config::CLoadableOptions {
   void validate(const std::string& source) const;
 
   bool hasRgbd() const { return !rgb_topic.empty(); }
+  bool depthRegistered() const { return depth_camera_info_topic.empty(); }
   bool hasSplitImu() const { return !accel_topic.empty(); }
 };
 

@@ -252,3 +252,25 @@ TEST(Bag2Rawlog, NmeaSentencesBecomeGgaFixes) {
   EXPECT_NEAR(back.gnss[1].hdop, 1.1, 1e-6);
   EXPECT_NEAR(back.gnss[0].altitude_m, 519.5, 1e-9);
 }
+
+TEST(Bag2Rawlog, UnregisteredDepthIsRegisteredToColourWhenRead) {
+  // The depth camera sits 0.2 m to the right of the colour camera (x in the colour optical
+  // frame), same intrinsics (fx 5): a plane 1 m away appears fx * 0.2 / 1 = 1 pixel further
+  // right in colour, so colour column 0 has no depth and the others see the plane.
+  const std::string dir = dynslam::testing::scratchDir();
+  const Conversion c = convert(dir, std::string(kRawTopics),
+                               "--set bag2rawlog.depth_topic=/cam/depth_shifted "
+                               "--set bag2rawlog.depth_camera_info_topic=/cam/depth/camera_info "
+                               "--set 'bag2rawlog.depth_to_colour_pose=0.2 0 0 0 0 0 1'");
+  ASSERT_EQ(c.result.exit_code, 0) << c.result.output;
+  const ReadBack back = readBack(c.rawlog);
+  ASSERT_EQ(back.frames.size(), static_cast<size_t>(kFrames));
+  const cv::Mat& depth = back.frames[1].depth;
+  ASSERT_EQ(depth.size(), cv::Size(kWidth, kHeight));
+  for (int r = 0; r < kHeight; ++r) {
+    EXPECT_EQ(depth.at<float>(r, 0), 0.0f) << "row " << r;
+    for (int col = 1; col < kWidth; ++col)
+      EXPECT_NEAR(depth.at<float>(r, col), 1.0, 1e-6) << r << "," << col;
+  }
+  expectSameImage(back.frames[1].rgb, expectedBgr(1), "colour of an unregistered pair");
+}

@@ -139,6 +139,9 @@ void writeTestBag(const std::string& path) {
   info.D = {0.01, -0.02, 0.0, 0.0, 0.0};
   info.K = {kFx, 0, kCx, 0, kFy, kCy, 0, 0, 1};
   bag.write("/cam/color/camera_info", recorded(colourStamp(0), 0.04), info);
+  info.header.frame_id = "camera_depth_optical_frame";
+  info.D = {0, 0, 0, 0, 0};
+  bag.write("/cam/depth/camera_info", recorded(colourStamp(0), 0.04), info);
 
   for (const double t : imuStamps()) {
     const auto g = gyroAt(t), a = accAt(t);
@@ -189,6 +192,8 @@ void writeTestBag(const std::string& path) {
     cv::imencode(".png", mm, png);
     packed.data.insert(packed.data.end(), png.begin(), png.end());
     bag.write("/cam/depth_compressed", recorded(td, 0.045), packed);
+    const cv::Mat plane(kHeight, kWidth, CV_16UC1, cv::Scalar(1000));
+    bag.write("/cam/depth_shifted", recorded(td, 0.045), imageMessage(plane, "16UC1", td));
     cv::Mat eight(kHeight, kWidth, CV_8UC1, cv::Scalar(5));
     bag.write("/cam/depth_8bit", recorded(td, 0.045), imageMessage(eight, "mono8", td));
   }

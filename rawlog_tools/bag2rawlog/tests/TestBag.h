@@ -6,6 +6,9 @@
 //   /cam/aligned_depth/image_raw      16UC1 mm, 3 ms after each colour frame
 //   /cam/depth_metres                 32FC1 m, the same depth
 //   /cam/depth_compressed             the same depth, image_transport compressedDepth (PNG)
+//   /cam/depth_shifted, /cam/depth/camera_info   a plane 1 m away (16UC1) seen by a depth
+//                                     camera with the colour intrinsics, 0.2 m to its right
+//                                     (not registered to colour)
 //   /cam/depth_8bit                   mono8 "depth" (no depth encoding)
 //   /imu                              Imu, gyro + accel, 200 Hz
 //   /accel/sample, /gyro/sample       split Imu streams, 100 Hz and 200 Hz (RealSense)
