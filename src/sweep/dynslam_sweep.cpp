@@ -131,13 +131,11 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
     std::string absent;
     for (const auto& path : {spec.config, spec.rawlogs.front(), spec.dynslam})
       if (absent.empty() && !fs::is_regular_file(path)) absent = path;
-    if (cl.has("--no-check")) {
-    } else if (absent.empty()) {
+    if (!cl.has("--no-check") && absent.empty())
       checkConfiguration(spec, jobs.front());
-    } else {
+    else if (!cl.has("--no-check"))
       std::cerr << "dynslam-sweep: configuration not checked: '" << absent
                 << "' is not on this machine\n";
-    }
     return emit(spec, jobs, mode, cl.has("--jobs") ? static_cast<int>(jobsFlag) : 0);
   }
 
