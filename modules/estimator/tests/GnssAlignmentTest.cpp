@@ -1,3 +1,4 @@
+#include <dynslam/estimator/GnssAnchor.h>
 #include <dynslam/estimator/GnssFixBuffer.h>
 #include <dynslam/estimator/GnssWorldAlignment.h>
 
@@ -67,19 +68,63 @@ TEST(GnssWorldAlignment, WithoutGravityALineIsNotEnoughButATurnIs) {
 
 TEST(GnssFixBuffer, InterpolatesBetweenBracketingFixesAndWaitsForTheNext) {
   GnssFixBuffer b(0.5);
-  b.add(1.0, Eigen::Vector3d(0, 0, 0));
-  b.add(1.1, Eigen::Vector3d(0.8, 0, 0));
+  b.add(1.0, Eigen::Vector3d(0, 0, 0), 0.8);
+  b.add(1.1, Eigen::Vector3d(0.8, 0, 0), 1.2);
   EXPECT_FALSE(b.at(0.9)) << "before the first fix";
   EXPECT_FALSE(b.at(1.15)) << "the later fix has not come yet";
   EXPECT_FALSE(b.covers(1.15));
   ASSERT_TRUE(b.at(1.025));
-  EXPECT_NEAR(b.at(1.025)->x(), 0.2, 1e-12);
-  EXPECT_NEAR(b.at(1.1)->x(), 0.8, 1e-12) << "exactly at a fix";
+  EXPECT_NEAR(b.at(1.025)->enu.x(), 0.2, 1e-12);
+  EXPECT_NEAR(b.at(1.1)->enu.x(), 0.8, 1e-12) << "exactly at a fix";
+  EXPECT_EQ(b.at(1.025)->hdop, 1.2) << "the worse of the two";
   b.add(1.05, Eigen::Vector3d(9, 9, 9));  // out of order: ignored
-  EXPECT_NEAR(b.at(1.05)->x(), 0.4, 1e-12);
+  EXPECT_NEAR(b.at(1.05)->enu.x(), 0.4, 1e-12);
   b.add(2.0, Eigen::Vector3d(5, 0, 0));  // 0.9 s dropout
   EXPECT_TRUE(b.covers(1.5));
   EXPECT_FALSE(b.at(1.5)) << "no interpolation across a dropout";
   b.dropBefore(1.5);
   EXPECT_EQ(b.size(), 2u) << "keeps the fix before 1.5 for interpolating after it";
+}
+
+
+// A drive of 20 m east then north at 5 m/s with fixes at 10 Hz and keyframes at 3 Hz, the world
+// rotated and shifted from ENU: before the alignment no targets, after it each keyframe's target
+// is the antenna's true world position, with the HDOP-scaled covariance in world axes.
+TEST(GnssAnchor, TargetsFollowOnceTheFixesAreAligned) {
+  const Eigen::Isometry3d T = trueWorldFromEnu();
+  auto enuAt = [](double t) {
+    return t < 4 ? Eigen::Vector3d(5 * t, 0, 0) : Eigen::Vector3d(20, 5 * (t - 4), 0);
+  };
+  GnssAnchorParams params;
+  params.uere_horizontal_m = 0.05;
+  GnssAnchor anchor(params);
+  const Eigen::Vector3d gravity = T.linear() * Eigen::Vector3d(0, 0, -9.81);
+  auto antennaAt = [&](double t) -> std::optional<Eigen::Vector3d> { return T * enuAt(t); };
+  std::vector<GnssTarget> targets;
+  double fixT = 0, keyframeT = 0;
+  for (double t = 0; t < 8; t += 0.01) {
+    std::vector<dynslam::core::GnssFix> fixes;
+    if (t >= fixT) {
+      dynslam::core::GnssFix f;
+      f.t = fixT;
+      f.enu = enuAt(fixT);
+      f.hdop = 0.8;
+      fixes.push_back(f);
+      fixT += 0.1;
+    }
+    anchor.addFixes(fixes);
+    if (t >= keyframeT) {
+      anchor.keyframeAdded(keyframeT);
+      keyframeT += 1.0 / 3;
+    }
+    for (const auto& target : anchor.resolve(antennaAt, gravity)) {
+      EXPECT_TRUE(anchor.aligned());
+      EXPECT_LT((target.world - T * enuAt(target.t)).norm(), 1e-6) << "t = " << target.t;
+      EXPECT_NEAR(target.covariance.trace(), 0.04 * 0.04 * 6, 1e-9);  // 2 x horizontal + 4 x
+      targets.push_back(target);
+    }
+  }
+  ASSERT_TRUE(anchor.aligned());
+  EXPECT_GT(targets.size(), 10u);
+  EXPECT_GT(targets.front().t, 1.5) << "the first targets waited for a 10 m span";
 }

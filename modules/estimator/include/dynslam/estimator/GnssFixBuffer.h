@@ -16,12 +16,17 @@ class GnssFixBuffer {
   /// `max_gap_s`: fixes further apart than this are not interpolated between (a dropout).
   explicit GnssFixBuffer(double max_gap_s = 0.5) : max_gap_s_(max_gap_s) {}
 
+  struct Position {
+    Eigen::Vector3d enu;
+    double hdop;  ///< the larger of the bracketing fixes' (0 = not reported)
+  };
+
   /// Adds a fix; fixes must come in time order (an older one is ignored).
-  void add(double t, const Eigen::Vector3d& enu);
+  void add(double t, const Eigen::Vector3d& enu, double hdop = 0);
 
   /// ENU at time `t` interpolated between the bracketing fixes; nothing when no fix is at or
   /// after `t` yet, none is at or before it, or they are more than max_gap_s apart.
-  std::optional<Eigen::Vector3d> at(double t) const;
+  std::optional<Position> at(double t) const;
 
   /// True when a fix at or after `t` has arrived (at(t) will not change any more).
   bool covers(double t) const { return !fixes_.empty() && fixes_.back().t >= t; }
@@ -35,6 +40,7 @@ class GnssFixBuffer {
   struct Fix {
     double t;
     Eigen::Vector3d enu;
+    double hdop;
   };
   double max_gap_s_;
   std::deque<Fix> fixes_;
