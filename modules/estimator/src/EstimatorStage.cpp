@@ -75,6 +75,17 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     throw std::invalid_argument("dynamic_handling = '" + h + "': expected none, remove or full");
   nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
   rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
+  use_gnss = c.read_bool(s, "use_gnss", use_gnss);
+  gnss.uere_horizontal_m = c.read_double(s, "gnss_uere_horizontal", gnss.uere_horizontal_m);
+  gnss.vertical_factor = c.read_double(s, "gnss_vertical_factor", gnss.vertical_factor);
+  gnss.alignment.min_span_m = c.read_double(s, "gnss_align_span", gnss.alignment.min_span_m);
+  for (int i = 0; i < 3; ++i)
+    window.gnss_lever_arm[i] =
+        c.read_double(s, std::string("gnss_lever_arm_") + "xyz"[i], window.gnss_lever_arm[i]);
+  window.gnss_huber_sigmas = c.read_double(s, "gnss_huber_sigmas", window.gnss_huber_sigmas);
+  if (!(gnss.uere_horizontal_m > 0 && gnss.vertical_factor > 0 && gnss.alignment.min_span_m > 0))
+    throw std::invalid_argument(
+        "gnss_uere_horizontal, gnss_vertical_factor and gnss_align_span must be > 0");
 }
 
 void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -132,6 +143,20 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "with full: NonRigid features as constant-velocity world points (r_D)");
   core::writeKey(c, s, "rigid_factors", rigid_factors,
                  "with full: Rigid features as points of their object, object poses (r_O, r_om)");
+  core::writeKey(c, s, "use_gnss", use_gnss,
+                 "GNSS position factors on keyframes (ENU from the first fix, aligned to the world "
+                 "once the path spans gnss_align_span)");
+  core::writeKey(c, s, "gnss_uere_horizontal", gnss.uere_horizontal_m,
+                 "m; horizontal sigma of a fix at HDOP 1 (2-5 m plain GPS, ~0.02 m RTK)");
+  core::writeKey(c, s, "gnss_vertical_factor", gnss.vertical_factor,
+                 "vertical sigma = this x horizontal sigma");
+  core::writeKey(c, s, "gnss_align_span", gnss.alignment.min_span_m,
+                 "m; horizontal extent of the path before ENU is aligned to the world");
+  for (int i = 0; i < 3; ++i)
+    core::writeKey(c, s, std::string("gnss_lever_arm_") + "xyz"[i], window.gnss_lever_arm[i],
+                   "m; GNSS antenna in the body (IMU) frame");
+  core::writeKey(c, s, "gnss_huber_sigmas", window.gnss_huber_sigmas,
+                 "Huber threshold on the whitened GNSS residual");
 }
 
 EstimatorStage::EstimatorStage() = default;
@@ -235,6 +260,9 @@ void EstimatorStage::process(core::Frame& frame) {
       if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
   }
   if (imu_) imu_->addSamples(frame.imu, frame.index);
+  if (options_.use_gnss && !gnss_ && !frame.gnss.empty())
+    gnss_ = std::make_unique<GnssAnchor>(options_.gnss);
+  if (gnss_) gnss_->addFixes(frame.gnss);
   const Eigen::Isometry3d T_ic = frame.T_body_imu.inverse() * frame.T_body_camera;
 
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
@@ -304,6 +332,7 @@ void EstimatorStage::process(core::Frame& frame) {
     // it was, else the last frame's.
     if (!report.usable && last_body_ && !plausibleStep(last_body_->inverse() * T_wb))
       T_wb = *last_body_;
+    if (gnss_) gnss_->keyframeAdded(frame.t);
     if (report.usable) {
       T_wb = window_->latestPose();
       estimatedObjects = window_->latestObjectPoses();
@@ -324,12 +353,30 @@ void EstimatorStage::process(core::Frame& frame) {
       selector_.accept(frame.t, pixels);
     }
   }
+  anchorToGnss(frame.t);
   // A slightly scaled rotation compounded to inf in 6 frames through the motion prediction.
   T_wb = nearestRigid(T_wb);
   previous_body_ = last_body_;
   last_body_ = T_wb;
   frame.T_world_camera = T_wb * T_ic;
   objects_.update(frame, estimatedObjects);
+}
+
+void EstimatorStage::anchorToGnss(double t) {
+  if (!gnss_ || !window_) return;
+  std::optional<Eigen::Vector3d> gravity;
+  if (window_->usesImu()) gravity = window_->gravity();
+  const bool wasAligned = gnss_->aligned();
+  for (const GnssTarget& target :
+       gnss_->resolve([&](double kt) { return window_->antennaAt(kt); }, gravity))
+    gnss_factors_ += window_->addGnssTarget(target);
+  if (!wasAligned && gnss_->aligned()) {
+    gnss_aligned_at_ = t - first_t_;
+    MRPT_LOG_INFO_STREAM("GNSS aligned to the world at t = "
+                         << gnss_aligned_at_ << " s from " << gnss_->alignment().pairs()
+                         << " keyframes (" << (gravity ? "4 DoF about gravity" : "SE(3)")
+                         << ", RMS " << gnss_->alignment().rmsResidual() << " m)");
+  }
 }
 
 void EstimatorStage::finish() {
@@ -355,7 +402,10 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
       {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0},
       {"rigid_objects_per_keyframe", keyframes_ ? double(rigid_objects_solved_) / keyframes_ : 0.0},
       {"imu_gaps", imu_ ? double(imu_->gaps()) : 0.0},
-      {"blind_frames", double(blind_frames_)}};
+      {"blind_frames", double(blind_frames_)},
+      {"gnss_aligned_at", gnss_aligned_at_},
+      {"gnss_alignment_rms", gnss_ && gnss_->aligned() ? gnss_->alignment().rmsResidual() : 0.0},
+      {"gnss_factors", double(gnss_factors_)}};
 }
 
 }  // namespace dynslam::estimator

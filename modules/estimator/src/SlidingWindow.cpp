@@ -2,6 +2,7 @@
 
 #include "dynslam/estimator/Marginalizer.h"
 #include "dynslam/estimator/StateBlocks.h"
+#include "dynslam/estimator/factors/GnssPositionFactor.h"
 #include "dynslam/estimator/factors/ImuFactor.h"
 #include "dynslam/estimator/factors/NonRigidConstantVelocityFactor.h"
 #include "dynslam/estimator/factors/NonRigidDepthFactor.h"
@@ -30,7 +31,8 @@ using FactorSink = std::function<void(std::shared_ptr<const ceres::CostFunction>
 /// (for its marginalisation), so the two cannot disagree on what the graph holds.
 class SlidingWindow::ProblemBuilder {
  public:
-  ProblemBuilder(SlidingWindow& w) : w_(w), huber_(w.params_.huber_sigmas) {}
+  ProblemBuilder(SlidingWindow& w)
+      : w_(w), huber_(w.params_.huber_sigmas), gnss_huber_(w.params_.gnss_huber_sigmas) {}
 
   /// `only`: a keyframe id, or -1 for every factor. Returns the landmarks given factors, and in
   /// `objects` the rigid objects given factors.
@@ -60,6 +62,11 @@ class SlidingWindow::ProblemBuilder {
                nullptr, {z.pose, a.pose, b.pose});
       }
     }
+    for (Keyframe& k : w_.keyframes_)
+      if (k.gnss && (only < 0 || only == k.id))
+        sink(std::make_shared<GnssPositionFactor>(k.gnss->world, w_.params_.gnss_lever_arm,
+                                                  k.gnss->covariance),
+             &gnss_huber_, {k.pose});
     if (w_.prior_.factor) sink(w_.prior_.factor, nullptr, w_.prior_.blocks);
     return landmarks;
   }
@@ -161,6 +168,7 @@ class SlidingWindow::ProblemBuilder {
 
   SlidingWindow& w_;
   ceres::HuberLoss huber_;
+  ceres::HuberLoss gnss_huber_;
 };
 
 SlidingWindow::SlidingWindow(const SlidingWindowParams& params, const PinholeCamera& camera,
@@ -416,6 +424,21 @@ std::vector<std::pair<std::int64_t, Eigen::Vector3d>> SlidingWindow::landmarkPos
   for (const auto& [id, l] : landmarks_.all())
     if (l.observations.size() >= 2 && keyframe(l.anchor)) out.emplace_back(id, landmarkWorld(l));
   return out;
+}
+
+std::optional<Eigen::Vector3d> SlidingWindow::antennaAt(double t) const {
+  for (const Keyframe& k : keyframes_)
+    if (std::abs(k.t - t) < 1e-9) return poseFromBlock(k.pose) * params_.gnss_lever_arm;
+  return std::nullopt;
+}
+
+bool SlidingWindow::addGnssTarget(const GnssTarget& target) {
+  for (Keyframe& k : keyframes_)
+    if (std::abs(k.t - target.t) < 1e-9) {
+      k.gnss = target;
+      return true;
+    }
+  return false;
 }
 
 }  // namespace dynslam::estimator

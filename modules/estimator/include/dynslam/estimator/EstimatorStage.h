@@ -58,6 +58,10 @@ struct EstimatorOptions : mrpt::config::CLoadableOptions {
   /// Failure detection: estimates beyond these restart the window (m/s, rad/s, m/s^2).
   double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
   int min_keyframe_features = 15;  ///< fewer static features: no keyframe, the pose is predicted
+  /// GNSS position factors (GnssAnchor; lever arm in window.gnss_lever_arm), when the frames
+  /// carry fixes.
+  bool use_gnss = false;
+  GnssAnchorParams gnss;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -75,7 +79,8 @@ class EstimatorStage : public core::Stage {
   /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets, imu_initialized_at (s
   /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D),
   /// rigid_objects_per_keyframe (objects with r_O / r_om factors in the solve), imu_gaps,
-  /// blind_frames (too few features for a keyframe).
+  /// blind_frames (too few features for a keyframe), gnss_aligned_at (s of stream, -1 never),
+  /// gnss_alignment_rms (m), gnss_factors.
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
@@ -86,12 +91,15 @@ class EstimatorStage : public core::Stage {
   /// window is visual-inertial, else constant velocity from the last two frames.
   Eigen::Isometry3d predictBody(double t, Eigen::Vector3d* velocity) const;
   void tryImuInitialization(double t);
+  /// use_gnss: hands the window the GNSS targets of keyframes whose fixes have arrived.
+  void anchorToGnss(double t);
   /// A pose change no larger than pnp_max_correction_m / _deg (and finite).
   bool plausibleStep(const Eigen::Isometry3d& step) const;
 
   EstimatorOptions options_;
   std::unique_ptr<SlidingWindow> window_;
   std::unique_ptr<KeyframeImu> imu_;
+  std::unique_ptr<GnssAnchor> gnss_;
   ObjectTrajectories objects_;
   std::deque<std::size_t> window_features_;  // static features given to each window keyframe
   KeyframeSelector selector_;
@@ -100,7 +108,8 @@ class EstimatorStage : public core::Stage {
   std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
   std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0, blind_frames_ = 0;
   std::size_t rigid_objects_solved_ = 0;  // sum over keyframes of SolveReport::rigid_objects
-  double first_t_ = 0, imu_initialized_at_ = -1;
+  std::size_t gnss_factors_ = 0;
+  double first_t_ = 0, imu_initialized_at_ = -1, gnss_aligned_at_ = -1;
   std::string last_init_failure_;
 };
 

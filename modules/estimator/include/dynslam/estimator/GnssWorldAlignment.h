@@ -22,7 +22,7 @@ namespace dynslam::estimator {
 struct GnssAlignmentParams {
   /// Horizontal extent (m) the pairs must span before the 4-DoF fit (largest distance of a
   /// pair from their centroid, in the plane orthogonal to gravity).
-  double min_span_m = 10.0;
+  double min_span_m = 5.0;
   /// Without gravity: the second singular value of the centred positions (m, RMS across the
   /// main direction) the SE(3) fit needs.
   double min_width_m = 2.0;

@@ -28,6 +28,7 @@
 //   have to be carried, re-gauged and finally dropped anyway when the object leaves; the camera
 //   loses only what r_om through the leaving keyframe said about it, which the static landmarks
 //   and the IMU dominate. The non-rigid points, by contrast, go into the prior.
+#include <dynslam/estimator/GnssAnchor.h>
 #include <dynslam/estimator/ImuInitializer.h>
 #include <dynslam/estimator/LandmarkTable.h>
 #include <dynslam/estimator/RigidObjectTable.h>
@@ -67,6 +68,9 @@ struct SlidingWindowParams {
   double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
   /// r_om: sigmas of a rigid object's change of motion per keyframe interval (m, rad).
   double object_motion_sigma_translation = 0.05, object_motion_sigma_rotation = 0.05;
+  /// GNSS antenna in the body frame (m) and the Huber threshold on its whitened residual.
+  Eigen::Vector3d gnss_lever_arm = Eigen::Vector3d::Zero();
+  double gnss_huber_sigmas = 3.0;
 };
 
 struct FeatureObservation {
@@ -155,6 +159,13 @@ class SlidingWindow {
   /// between keyframes.
   std::vector<std::pair<std::int64_t, Eigen::Vector3d>> landmarkPositions() const;
 
+  /// The GNSS antenna's world position at the keyframe of time `t` (gnss_lever_arm on its pose),
+  /// nothing when no keyframe of the window has that time.
+  std::optional<Eigen::Vector3d> antennaAt(double t) const;
+  /// Puts a GNSS position factor on the keyframe of time target.t from the next solve on (it is
+  /// marginalised into the prior with that keyframe). False when the keyframe has left.
+  bool addGnssTarget(const GnssTarget& target);
+
  private:
   struct Keyframe {
     std::int64_t id = 0;
@@ -162,6 +173,7 @@ class SlidingWindow {
     double pose[7];
     double speed_bias[9];
     std::shared_ptr<ImuPreintegration> preintegration;  // from the previous keyframe
+    std::optional<GnssTarget> gnss;                     // GnssPositionFactor on the pose when set
   };
   /// A non-rigid feature: world position at its first keyframe's time t0 and world velocity.
   struct NonRigidPoint {
