@@ -123,6 +123,8 @@ std::string writeSlurmScript(const SweepSpec& spec, const std::vector<Job>& jobs
   out << "#!/bin/bash\n"
       << "# dynslam-sweep job array: task i runs line i+1 of the job list (one dynslam run).\n"
       << "# Submit with: sbatch " << shellQuote(path) << "\n"
+      << "# Paths are as dynslam-sweep was given them: relative ones are taken from the folder\n"
+      << "# sbatch runs in (Slurm's default working directory), so submit from that same folder.\n"
       << "#SBATCH --job-name=dynslam-sweep\n"
       << "#SBATCH --array=0-" << (jobs.empty() ? 0 : jobs.size() - 1)
       << (throttle > 0 ? "%" + std::to_string(throttle) : std::string()) << "\n"
