@@ -12,6 +12,8 @@
 #                    for the Rigid features of each object)
 #   full-no-rigid    full with rigid_factors = false (Rigid features dropped)
 #   full-no-nonrigid full with nonrigid_factors = false (NonRigid features dropped)
+#   full-gnss        full with the GNSS factor (use_gnss), on the scenarios whose simulator
+#                    writes GNSS fixes (outdoor_*)
 # A camera path on a line (outdoor_street) makes the SE(3) Umeyama alignment degenerate: such a
 # run is aligned on its first pose instead (--align-origin) and marked "o" in the align column.
 # Object trajectories (the runner's objects/<id>.tum) of full and full-no-rigid: each track with
@@ -49,6 +51,8 @@ variantSettings() {
     full) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=true --set Estimator.nonrigid_factors=true" ;;
     full-no-rigid) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=false --set Estimator.nonrigid_factors=true" ;;
     full-no-nonrigid) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=true --set Estimator.nonrigid_factors=false" ;;
+    # The simulator's receiver: RTK-like, 2 cm at HDOP 0.8, antenna 0.5 m above the body origin.
+    full-gnss) echo "--set Estimator.dynamic_handling=full --set Estimator.use_gnss=true --set Estimator.gnss_uere_horizontal=0.025 --set Estimator.gnss_lever_arm_z=0.5" ;;
   esac
 }
 # objectApe SCENARIO_DIR RUN_DIR: "tracks N median X" over the run's object trajectories.
@@ -84,7 +88,9 @@ for sc in $SCENARIOS; do
   length=$(pathLength "$S/groundtruth.tum")
   declare -A ape=()
   objects=""
-  for v in $VARIANTS; do
+  variants="$VARIANTS"
+  case "$sc" in outdoor_*) variants="$variants full-gnss" ;; esac
+  for v in $variants; do
     R="$S/run_$v"
     rm -rf "$R"
     # shellcheck disable=SC2046
@@ -114,5 +120,9 @@ for sc in $SCENARIOS; do
     -v f="${ape[full]:-nan}" -v nr="${ape[full-no-rigid]:-nan}" -v nn="${ape[full-no-nonrigid]:-nan}" \
     'BEGIN { printf "%-20s path %.2f m; full / none = %.3f (target <= 0.5), full / remove = %.3f (target <= 0.85), remove / none = %.3f, full-no-rigid / remove = %.3f, full-no-nonrigid / remove = %.3f\n", sc, l, f / n, f / r, r / n, nr / r, nn / r }'
   echo "$sc object trajectories${objects}"
+  if [ -n "${ape[full-gnss]:-}" ]; then
+    awk -v f="${ape[full]:-nan}" -v g="${ape[full-gnss]}" -v sc="$sc" \
+      'BEGIN { printf "%-20s GNSS: full-gnss / full = %.3f\n", sc, g / f }'
+  fi
   unset ape
 done
