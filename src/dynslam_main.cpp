@@ -3,6 +3,8 @@
 
 #include <dynslam/core/CommandLine.h>
 
+#include <glog/logging.h>
+
 #include <iostream>
 
 namespace {
@@ -40,6 +42,13 @@ Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 u
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Ceres logs through glog: without this, every run starts with glog's "Logging before
+  // InitGoogleLogging" banner and a solve that tries an invalid step (a point behind a camera)
+  // prints a warning per try, dozens per run. The estimator counts and reports its own failures
+  // (summary.json); only glog errors still reach stderr.
+  google::InitGoogleLogging(argv[0]);
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = google::GLOG_ERROR;
   return dynslam::core::runProgram("dynslam", [&] {
     dynslam::core::CommandLine cl({"--config", "--rawlog", "--out", "--max-frames", "--frames",
                                    "--gt", "--map-every", "--map-voxel"},
