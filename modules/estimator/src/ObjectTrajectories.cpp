@@ -36,7 +36,12 @@ void ObjectTrajectories::update(core::Frame& frame,
     f.T_world_object = window != fromWindow.end() ? window->second : follow(set, frame, T_wc);
     f.last_frame = frame.index;
     updated[set.object_id] = f;
-    frame.object_poses.push_back({set.object_id, f.T_world_object});
+    // Written: the followed orientation at the set's (virtual) centroid as seen in this frame.
+    // The followed origin drifts from the set as rotation errors compound (and jumps where the
+    // window recentres an object's frame); the centroid is this frame's measurement.
+    Eigen::Isometry3d written = f.T_world_object;
+    written.translation() = T_wc * set.virtual_centroid;
+    frame.object_poses.push_back({set.object_id, written});
   }
   // After all sets are followed: each composes from the previous frame's poses.
   for (const auto& [id, f] : updated) objects_[id] = f;

@@ -11,6 +11,11 @@
 // Where the sliding window estimates an object (r_O, r_om: its L at a keyframe), that estimate
 // replaces the composed pose and the frames after it compose from there. The window takes a new
 // object's first pose from predict(), so both follow the same object frame.
+//
+// What is written (Frame::object_poses, objects/ID.tum) is that orientation placed at the set's
+// virtual centroid in this frame: the composed origin drifts from the set as rotation errors
+// compound, and jumps where the window recentres an object's frame. (indoor_people_high, full:
+// object APE median over 14 tracks 0.248 -> 0.236 m.)
 #include <dynslam/core/Frame.h>
 
 #include <map>
