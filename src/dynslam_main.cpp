@@ -1,4 +1,5 @@
 // dynslam: plays a rawlog through the stages an ini file configures and writes the trajectory.
+#include "runner/LiveView.h"
 #include "runner/Runner.h"
 
 #include <dynslam/core/CommandLine.h>
@@ -12,6 +13,7 @@ const char* kUsage =
     R"(usage: dynslam --config FILE.ini --rawlog FILE.rawlog --out DIR [--set section.key=value]...
                [--max-frames N] [--gt GT.tum] [--frames DIR [--no-video]] [--realtime]
                [--no-map] [--map-every N] [--map-voxel M] [--quiet]
+               [--gui [--gui-rate HZ] [--gui-screenshot FILE.png]]
 
 Plays FILE.rawlog (RGB-D CObservation3DRangeScan, CObservationIMU, CObservationGPS; observation
 or action/sensory-frame layout) through the stages listed in [pipeline] stages of FILE.ini, and
@@ -36,6 +38,14 @@ rigid, magenta non-rigid) drawn on it, and the same pictures as the video DIR/an
 --realtime plays the rawlog at camera rate (frames handed over as their stamps say), as a live
 camera would; with [Detection] mode = realtime the detector thread then runs at the rate it can
 keep, and summary.json gets "realtime" (lag behind the camera) and the detector's rate.
+--gui opens a live MRPT 3-D window (needs an X display; without one: xvfb-run -a dynslam --gui
+...) showing what map.3Dscene will hold (static map, black camera trajectory, object tracks),
+the current camera as axes and the annotated picture of the frame (as --frames draws it) in the
+lower-left corner; redrawn at most --gui-rate HZ times a second (default 10) so the stages are
+not slowed. Closing the window does not stop the run: it goes on without the window and writes
+every output. The window closes when the run ends. --gui-screenshot FILE.png (implies --gui)
+writes the window's final picture (read back from the window, or drawn off-screen from the
+window's viewpoint where software OpenGL reads the window back black).
 --set overrides one ini value (repeatable). Unknown keys, sections and stage names are errors.
 Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 usage, 130 Ctrl-C.
 )";
@@ -50,9 +60,10 @@ int main(int argc, char** argv) {
   FLAGS_logtostderr = true;
   FLAGS_minloglevel = google::GLOG_ERROR;
   return dynslam::core::runProgram("dynslam", [&] {
-    dynslam::core::CommandLine cl({"--config", "--rawlog", "--out", "--max-frames", "--frames",
-                                   "--gt", "--map-every", "--map-voxel"},
-                                  {"--quiet", "--realtime", "--no-video", "--no-map"}, {"--set"});
+    dynslam::core::CommandLine cl(
+        {"--config", "--rawlog", "--out", "--max-frames", "--frames", "--gt", "--map-every",
+         "--map-voxel", "--gui-rate", "--gui-screenshot"},
+        {"--quiet", "--realtime", "--no-video", "--no-map", "--gui"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
@@ -75,6 +86,15 @@ int main(int argc, char** argv) {
     args.map_voxel_size = cl.optionalDouble("--map-voxel").value_or(args.map_voxel_size);
     if (args.map_every_n_frames < 1 || !(args.map_voxel_size > 0))
       throw dynslam::core::UsageError("--map-every must be >= 1 and --map-voxel > 0");
+    args.gui_screenshot = cl.valueOr("--gui-screenshot", "");
+    args.gui = cl.has("--gui") || !args.gui_screenshot.empty();
+    args.gui_max_rate_hz = cl.optionalDouble("--gui-rate").value_or(args.gui_max_rate_hz);
+    if (!(args.gui_max_rate_hz > 0)) throw dynslam::core::UsageError("--gui-rate must be > 0");
+    // Before any work: a run that cannot show its window fails at once, saying why.
+    if (args.gui) {
+      if (const auto problem = dynslam::runner::LiveView::displayProblem(); !problem.empty())
+        throw std::runtime_error(problem);
+    }
     return dynslam::runner::runDynslam(args);
   });
 }

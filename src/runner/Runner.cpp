@@ -4,6 +4,7 @@
 #include "AnnotatedOutput.h"
 #include "BuiltinStages.h"
 #include "GroundTruthScore.h"
+#include "LiveView.h"
 #include "TimingLog.h"
 
 #include <dynslam/core/JsonWriter.h>
@@ -197,7 +198,9 @@ int runDynslam(const RunnerArgs& args) {
   std::set<int> objectFiles;  // ids whose objects/<id>.tum this run has created
   std::optional<AnnotatedOutput> annotated;
   std::optional<TimingLog> timing;
-  std::optional<viz::MapSceneBuilder> map;
+  std::optional<viz::MapSceneBuilder> map;  // also built for --gui, saved only with args.map
+  std::optional<LiveView> live;
+  std::optional<core::Frame> lastFrame;  // --gui: the last frame, shown once more at the end
   core::Trajectory groundTruth;
 
   std::error_code ec;
@@ -219,7 +222,7 @@ int runDynslam(const RunnerArgs& args) {
     trajectory.emplace((fs::path(args.out) / "trajectory.tum").string());
     if (!args.ground_truth.empty()) groundTruth = readGroundTruth(args.ground_truth);
     if (!args.frames_dir.empty()) annotated.emplace(args.frames_dir, args.frames_video);
-    if (args.map) {
+    if (args.map || args.gui) {
       viz::MapSceneOptions mapOptions;
       mapOptions.every_n_frames = args.map_every_n_frames;
       mapOptions.voxel_size = args.map_voxel_size;
@@ -242,6 +245,11 @@ int runDynslam(const RunnerArgs& args) {
                 << ": frames are read and processed, but trajectory.tum stays empty\n";
 
     io::RawlogSource source(args.rawlog);
+    if (args.gui) {
+      LiveViewOptions liveOptions;
+      liveOptions.max_rate_hz = args.gui_max_rate_hz;
+      live.emplace(liveOptions);
+    }
     core::ProgressReporter progress(stderr, !args.quiet && isatty(STDERR_FILENO) != 0);
     std::signal(SIGINT, onInterrupt);
     std::vector<core::Frame> ready;
@@ -269,6 +277,10 @@ int runDynslam(const RunnerArgs& args) {
                            .count());
         if (annotated) annotated->write(frame);
         if (map) map->addFrame(frame);
+        if (live) {
+          live->update(frame, *map);
+          lastFrame = frame;
+        }
         ++rec.frames;
         rec.imu_samples += frame.imu.size();
         rec.gnss_fixes += frame.gnss.size();
@@ -286,6 +298,7 @@ int runDynslam(const RunnerArgs& args) {
     }
     pipeline->finish();
     if (annotated) annotated->finish();
+    if (live && lastFrame) live->update(*lastFrame, *map, true);
     if (g_interrupted) {
       rec.status = "interrupted";
       std::cerr << "\ndynslam: interrupted; outputs hold the first " << rec.frames << " frames\n";
@@ -303,7 +316,22 @@ int runDynslam(const RunnerArgs& args) {
   rec.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // The map holds what was done, also after an error or Ctrl-C (like trajectory.tum); its
   // saving is not part of the frame rate.
-  if (map) {
+  // After the frame rate is taken: the screenshot waits for the window to redraw.
+  if (live && !args.gui_screenshot.empty()) {
+    try {
+      const std::string source = live->saveScreenshot(args.gui_screenshot);
+      std::cerr << "dynslam: wrote " << args.gui_screenshot << " (" << source << " image, "
+                << live->updates() << " window updates)\n";
+    } catch (const std::exception& e) {
+      std::cerr << "dynslam: error: " << e.what() << "\n";
+      if (rec.status == "ok") {
+        rec.status = "failed";
+        rec.error = e.what();
+      }
+    }
+  }
+  live.reset();
+  if (map && args.map) {
     const std::string mapPath = (fs::path(args.out) / "map.3Dscene").string();
     try {
       map->save(mapPath);

@@ -23,6 +23,11 @@ struct RunnerArgs {
   /// stamp says, relative to the first), as a live camera would; the lag behind that schedule
   /// goes into summary.json. Off: as fast as the stages go.
   bool realtime = false;
+  /// A live 3-D window (LiveView: map, trajectory, objects, annotated frame), redrawn at most
+  /// gui_max_rate_hz times a second. Closing it does not stop the run.
+  bool gui = false;
+  double gui_max_rate_hz = 10.0;
+  std::string gui_screenshot;  ///< non-empty (with gui): the window's picture at the end, PNG
 };
 
 /// Runs the whole job. Returns the process exit code: 0 on success, 1 when the input or the
