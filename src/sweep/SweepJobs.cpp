@@ -82,6 +82,7 @@ std::vector<std::string> dynslamArgv(const SweepSpec& spec, const Job& job) {
   std::vector<std::string> argv{
       spec.dynslam, "--config", spec.config, "--rawlog", spec.rawlogs[job.rawlog],
       "--out",      job.dir,    "--quiet"};
+  if (!spec.keep_maps) argv.push_back("--no-map");
   for (const auto& o : job.overrides) {
     argv.push_back("--set");
     argv.push_back(o);

@@ -16,6 +16,9 @@ struct SweepSpec {
   std::vector<SweptKey> keys;
   std::string out;                ///< --out DIR
   std::vector<std::string> sets;  ///< fixed --set overrides, applied before the swept ones
+  /// --keep-maps: jobs write map.3Dscene too (off: --no-map, a sweep scores trajectories and a
+  /// map per job costs time and disk for nothing).
+  bool keep_maps = false;
 };
 
 struct Job {

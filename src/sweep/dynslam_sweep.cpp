@@ -20,7 +20,7 @@ const char* kUsage =
     R"(usage: dynslam-sweep --config FILE.ini --grid "Section.key=v1,v2;Section.key2=a,b"
                      --rawlog A [--rawlog B ...] [--gt A.tum [--gt B.tum ...]] --out DIR
                      [--jobs N] [--set Section.key=value]... [--dynslam PATH]
-                     [--emit parallel|slurm] [--collect] [--no-check]
+                     [--emit parallel|slurm] [--collect] [--no-check] [--keep-maps]
 
 Runs `dynslam --config FILE.ini --rawlog R --set ...` for every combination of the --grid values
 and every rawlog R, each into its own folder DIR/jobs/<rawlog>__<Section.key=value>__..., then
@@ -39,6 +39,7 @@ DIR/plot_<Section.key>.png (APE RMSE against each swept key's values).
   --emit slurm    also write DIR/sweep.slurm, a job array whose task i runs line i+1 of jobs.txt
   --collect       run nothing: gather results.csv and the plots from what the jobs left
   --no-check      skip the one-frame dynslam run that checks the configuration first
+  --keep-maps     let every job write map.3Dscene (by default jobs run with --no-map)
 
 Resumable: a job whose folder holds a summary.json with "status": "ok" is not run again (also
 by the job-list lines); a failed or interrupted one is. Progress goes to stderr.
@@ -109,6 +110,7 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
                                     std::to_string(spec.rawlogs.size()) + " rawlogs, " +
                                     std::to_string(spec.gts.size()) + " --gt)");
   spec.sets = cl.all("--set");
+  spec.keep_maps = cl.has("--keep-maps");
   spec.dynslam = cl.valueOr("--dynslam", dynslamBeside(argv0));
   try {
     spec.keys = parseGrid(cl.required("--grid"));
@@ -200,7 +202,7 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
 int main(int argc, char** argv) {
   return dynslam::core::runProgram("dynslam-sweep", [&] {
     dynslam::core::CommandLine cl({"--config", "--grid", "--out", "--jobs", "--dynslam", "--emit"},
-                                  {"--collect", "--no-check"}, {"--rawlog", "--gt", "--set"});
+                                  {"--collect", "--no-check", "--keep-maps"}, {"--rawlog", "--gt", "--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;

@@ -88,7 +88,7 @@ TEST(SweepJobs, FoldersAreReadableUniqueAndBounded) {
   // skips a job already done.
   const std::string line = shellLine(small, two[1]);
   EXPECT_NE(line.find("bin/dynslam --config 'my params.ini' --rawlog walk.rawlog --out "
-                      "out/jobs/walk__RgbdOdometry.method=icp --quiet --set "
+                      "out/jobs/walk__RgbdOdometry.method=icp --quiet --no-map --set "
                       "RgbdOdometry.method=icp"),
             std::string::npos)
       << line;
