@@ -202,7 +202,8 @@ int sweep(const dynslam::core::CommandLine& cl, const char* argv0) {
 int main(int argc, char** argv) {
   return dynslam::core::runProgram("dynslam-sweep", [&] {
     dynslam::core::CommandLine cl({"--config", "--grid", "--out", "--jobs", "--dynslam", "--emit"},
-                                  {"--collect", "--no-check", "--keep-maps"}, {"--rawlog", "--gt", "--set"});
+                                  {"--collect", "--no-check", "--keep-maps"},
+                                  {"--rawlog", "--gt", "--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
