@@ -4,13 +4,16 @@
 # first 1,000 frames and at the end, the growth between them (target < 5 %), the run's status
 # and APE.
 #   bash bench/estimator_soak.sh [--build DIR] [--out DIR] [--frames N] [--scenario NAME]
+#       [--dynslam-args "--no-map ..."]   (extra arguments for the dynslam run)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-BUILD="$ROOT/build"; OUT="/tmp/dynslam-soak"; FRAMES=10000; SCENARIO=indoor_people_low
+BUILD="$ROOT/build"; OUT="/tmp/dynslam-soak"; FRAMES=10000; SCENARIO=indoor_people_low; EXTRA=""
+
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) BUILD="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
+    --dynslam-args) EXTRA="$2"; shift 2 ;;
     --frames) FRAMES="$2"; shift 2 ;;
     --scenario) SCENARIO="$2"; shift 2 ;;
     *) echo "estimator_soak.sh: unknown argument '$1'" >&2; exit 2 ;;
@@ -27,8 +30,9 @@ if [ ! -f "$S/sim.rawlog" ]; then
 fi
 
 R="$S/soak"
+# shellcheck disable=SC2086
 "$BIN/dynslam" --config "$ROOT/params/sim_vio.ini" --rawlog "$S/sim.rawlog" --out "$R" \
-  --set Detection.objects="$S/objects.txt" > "$R.log" 2>&1 &
+  --set Detection.objects="$S/objects.txt" $EXTRA > "$R.log" 2>&1 &
 pid=$!
 : > "$R.rss"
 start=$(date +%s)

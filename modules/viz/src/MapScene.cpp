@@ -103,7 +103,16 @@ void MapSceneBuilder::addStaticPoints(const core::Frame& f) {
       if (!(z > 0) || z > options_.max_depth || object[u]) continue;
       const Eigen::Vector3f p = T * Eigen::Vector3f(static_cast<float>((u - k.cx) / k.fx) * z,
                                                     static_cast<float>((v - k.cy) / k.fy) * z, z);
-      Voxel& voxel = voxels_[voxelKey(p, inverse_size)];
+      const std::uint64_t key = voxelKey(p, inverse_size);
+      auto it = voxels_.find(key);
+      if (it == voxels_.end()) {
+        if (voxels_.size() >= options_.max_points) {
+          ++points_refused_;
+          continue;
+        }
+        it = voxels_.emplace(key, Voxel{}).first;
+      }
+      Voxel& voxel = it->second;
       voxel.position_sum += p;
       if (colour) {
         const auto& c = f.rgb.at<cv::Vec3b>(v, u);

@@ -149,3 +149,21 @@ TEST(MapScene, UnwritablePathIsNamed) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/map.3Dscene"), std::string::npos);
   }
 }
+
+TEST(MapScene, TheStaticMapStopsGrowingAtMaxPoints) {
+  dynslam::viz::MapSceneOptions options;
+  options.every_n_frames = 1;
+  options.max_points = 50;
+  dynslam::viz::MapSceneBuilder builder(options);
+  for (int k = 0; k < 5; ++k) {
+    dynslam::core::Frame f;
+    f.index = k;
+    f.t = k / 30.0;
+    f.depth = cv::Mat(48, 64, CV_32FC1, cv::Scalar(2.0f + 0.5f * k));  // a new wall each frame
+    f.intrinsics = {50, 50, 32, 24, 64, 48};
+    f.T_world_camera = Eigen::Isometry3d::Identity();
+    builder.addFrame(f);
+  }
+  EXPECT_EQ(builder.pointCount(), 50u);
+  EXPECT_GT(builder.pointsRefused(), 0u);
+}
