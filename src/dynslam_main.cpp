@@ -41,9 +41,10 @@ keep, and summary.json gets "realtime" (lag behind the camera) and the detector'
 --gui opens a live MRPT 3-D window (needs an X display; without one: xvfb-run -a dynslam --gui
 ...) showing what map.3Dscene will hold (static map, black camera trajectory, object tracks),
 the current camera as axes and the annotated picture of the frame (as --frames draws it) in the
-lower-left corner; redrawn at most --gui-rate HZ times a second (default 10) so the stages are
-not slowed. Closing the window does not stop the run: it goes on without the window and writes
-every output. The window closes when the run ends. --gui-screenshot FILE.png (implies --gui)
+lower-left corner; redrawn at most --gui-rate HZ times a second (default 10), the map, trajectory
+and tracks at most once a second, so the stages are barely slowed (about 5% fewer FPS). Closing
+the window does not stop the run: it goes on without the window and writes every output. The
+window closes when the run ends (map.3Dscene keeps the result for SceneViewer3D). --gui-screenshot FILE.png (implies --gui)
 writes the window's final picture (read back from the window, or drawn off-screen from the
 window's viewpoint where software OpenGL reads the window back black).
 --set overrides one ini value (repeatable). Unknown keys, sections and stage names are errors.

@@ -20,6 +20,9 @@ struct LiveViewOptions {
   /// The window is redrawn at most this often (the map goes through a scene copy each time,
   /// which costs milliseconds once it holds many points): frames in between are not shown.
   double max_rate_hz = 10.0;
+  /// The map, trajectory and object tracks are refreshed at most this often (s); the current
+  /// camera and the annotated frame at every redraw.
+  double map_interval_s = 1.0;
   int width = 1024, height = 768;
 };
 
@@ -44,13 +47,17 @@ class LiveView {
 
   bool isOpen() const;
   std::size_t updates() const { return updates_; }
+  /// Time the redraws took on the calling (pipeline) thread, in total; the drawing itself
+  /// happens on MRPT's GUI thread and is not in it.
+  double updateSeconds() const { return update_s_; }
 
  private:
   struct Window;
   std::unique_ptr<Window> window_;
   LiveViewOptions options_;
-  std::chrono::steady_clock::time_point last_update_{};
+  std::chrono::steady_clock::time_point last_update_{}, last_map_update_{};
   std::size_t updates_ = 0;
+  double update_s_ = 0;
   bool closed_reported_ = false;
 };
 

@@ -330,6 +330,10 @@ int runDynslam(const RunnerArgs& args) {
       }
     }
   }
+  if (live)
+    std::cerr << "dynslam: --gui: " << live->updates() << " window updates, "
+              << (live->updates() ? 1000.0 * live->updateSeconds() / live->updates() : 0.0)
+              << " ms each on the run's thread\n";
   live.reset();
   if (map && args.map) {
     const std::string mapPath = (fs::path(args.out) / "map.3Dscene").string();
