@@ -44,9 +44,10 @@ the current camera as axes and the annotated picture of the frame (as --frames d
 lower-left corner; redrawn at most --gui-rate HZ times a second (default 10), the map, trajectory
 and tracks at most once a second, so the stages are barely slowed (about 5% fewer FPS). Closing
 the window does not stop the run: it goes on without the window and writes every output. The
-window closes when the run ends (map.3Dscene keeps the result for SceneViewer3D). --gui-screenshot FILE.png (implies --gui)
-writes the window's final picture (read back from the window, or drawn off-screen from the
-window's viewpoint where software OpenGL reads the window back black).
+window closes when the run ends (map.3Dscene keeps the result for SceneViewer3D).
+--gui-screenshot FILE.png (implies --gui) writes the window's final picture (read back from the
+window, or drawn off-screen from the window's viewpoint where software OpenGL reads the window
+back black).
 --set overrides one ini value (repeatable). Unknown keys, sections and stage names are errors.
 Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 usage, 130 Ctrl-C.
 )";
