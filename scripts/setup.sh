@@ -13,7 +13,7 @@ BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 # What each package is for is in README.md ("Dependencies").
 PACKAGES=(build-essential cmake ccache zlib1g-dev
           libmrpt-dev mrpt-apps libopencv-dev libceres-dev libeigen3-dev
-          libgtest-dev libgmock-dev opencv-doc
+          libgtest-dev libgmock-dev opencv-doc xvfb
           librosbag-storage-dev libsensor-msgs-dev libcv-bridge-dev libmrpt-ros1bridge-dev)
 
 missing=()
