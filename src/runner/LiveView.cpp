@@ -11,14 +11,11 @@
 #include <mrpt/poses/CPose3D.h>
 #include <opencv2/core.hpp>
 
-#include <unistd.h>
 #include <cstdlib>
-#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
-namespace fs = std::filesystem;
 
 namespace dynslam::runner {
 namespace {
@@ -62,9 +59,6 @@ bool singleColour(const mrpt::img::CImage& image) {
 
 struct LiveView::Window {
   mrpt::gui::CDisplayWindow3D::Ptr window;
-  /// MapSceneBuilder builds its MRPT scene only when saving: the live view reads that file back
-  /// (the same content as map.3Dscene, by construction).
-  std::string scene_file;
   bool camera_aimed = false;
 };
 
@@ -90,15 +84,9 @@ LiveView::LiveView(LiveViewOptions options)
   window_->window->captureImagesStart();
   window_->window->setCameraZoom(8.0f);
   window_->window->setCameraElevationDeg(35.0f);
-  window_->scene_file =
-      (fs::temp_directory_path() / ("dynslam-live-" + std::to_string(::getpid()) + ".3Dscene"))
-          .string();
 }
 
-LiveView::~LiveView() {
-  std::error_code ec;
-  if (window_) fs::remove(window_->scene_file, ec);
-}
+LiveView::~LiveView() = default;
 
 bool LiveView::isOpen() const { return window_->window && window_->window->isOpen(); }
 
@@ -118,17 +106,15 @@ void LiveView::update(const core::Frame& frame, const viz::MapSceneBuilder& map,
   last_update_ = now;
   ++updates_;
 
-  // The map (static points, trajectory, tracks) goes through a gzip-compressed scene file
-  // (~30 ms at 50,000 points): refreshed at most every map_interval_s. The current camera and
-  // the annotated frame follow at the full rate.
+  // The map (static points, trajectory, tracks) is rebuilt from the voxels (a few ms at 50,000
+  // points): refreshed at most every map_interval_s. The current camera and the annotated frame
+  // follow at the full rate.
   std::optional<mrpt::opengl::COpenGLScene> fresh;
   if (force || updates_ == 1 ||
       std::chrono::duration<double>(now - last_map_update_).count() >= options_.map_interval_s) {
     last_map_update_ = now;
     fresh.emplace();
-    map.save(window_->scene_file);
-    if (!fresh->loadFromFile(window_->scene_file))
-      throw std::runtime_error("--gui: cannot read back '" + window_->scene_file + "'");
+    map.fill(*fresh);
     auto camera = mrpt::opengl::stock_objects::CornerXYZSimple(0.25f, 3.0f);
     camera->setName(kCurrentCamera);
     camera->setVisibility(false);

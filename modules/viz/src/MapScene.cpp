@@ -127,6 +127,12 @@ void MapSceneBuilder::addStaticPoints(const core::Frame& f) {
 
 void MapSceneBuilder::save(const std::string& path) const {
   mrpt::opengl::COpenGLScene scene;
+  fill(scene);
+  if (!scene.saveToFile(path))
+    throw std::runtime_error("cannot write the map scene '" + path + "'");
+}
+
+void MapSceneBuilder::fill(mrpt::opengl::COpenGLScene& scene) const {
   auto cloud = mrpt::opengl::CPointCloudColoured::Create();
   cloud->setName(kStaticMapName);
   cloud->setPointSize(2.0f);
@@ -144,8 +150,6 @@ void MapSceneBuilder::save(const std::string& path) const {
   auto origin = mrpt::opengl::stock_objects::CornerXYZSimple(0.3f, 2.0f);
   origin->setName("world_origin");
   scene.insert(origin);
-  if (!scene.saveToFile(path))
-    throw std::runtime_error("cannot write the map scene '" + path + "'");
 }
 
 }  // namespace dynslam::viz

@@ -13,6 +13,10 @@
 #include <unordered_map>
 #include <vector>
 
+namespace mrpt::opengl {
+class COpenGLScene;
+}
+
 namespace dynslam::viz {
 
 /// Names of the objects in the saved scene (COpenGLScene::getByName finds them).
@@ -47,6 +51,8 @@ class MapSceneBuilder {
 
   /// Writes the scene with COpenGLScene::saveToFile; throws std::runtime_error naming `path`.
   void save(const std::string& path) const;
+  /// Inserts the same objects into `scene` (the live window's; cleared by the caller).
+  void fill(mrpt::opengl::COpenGLScene& scene) const;
 
   std::size_t pointCount() const { return voxels_.size(); }
   /// Back-projected points that found no voxel because max_points was reached.
