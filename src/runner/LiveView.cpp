@@ -16,7 +16,6 @@
 #include <stdexcept>
 #include <thread>
 
-
 namespace dynslam::runner {
 namespace {
 
