@@ -2,6 +2,7 @@
 
 #include <dynslam/core/Median.h>
 #include <dynslam/detection/OnnxYoloDetector.h>
+#include <dynslam/tracking/Appearance.h>
 #include <dynslam/viz/AnnotatedFrame.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -53,7 +54,10 @@ void benchVideo(const VideoBenchSettings& s) {
     const auto dets = detector.detectImage(bgr);
     auto t1 = std::chrono::steady_clock::now();
     std::vector<tracking::BoxObservation> obs;
-    for (const auto& d : dets) obs.push_back({d.box, 0.0, d.category, d.model});
+    const bool appearance = tracker.params().reid_max_distance > 0;
+    for (const auto& d : dets)
+      obs.push_back({d.box, 0.0, d.category, d.model,
+                     appearance ? tracking::torsoHistogram(bgr, d.box) : cv::Mat()});
     tracker.predict(i / fps);
     tracker.update(obs, bgr.size());
     const auto tracks = tracker.tracks();
