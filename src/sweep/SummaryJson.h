@@ -1,6 +1,9 @@
 #pragma once
 // Reads the top-level scalar members of a dynslam summary.json ("status", "error", "fps",
 // "frames", ...); nested objects and arrays are skipped. Enough JSON for files JsonWriter wrote.
+// Written by hand because the one parser at hand, mrpt::containers::yaml (it reads our JSON
+// fine), returns what it parsed of a truncated file, {"status": "ok", "fr -> status ok, with
+// only a message on stderr: a job killed while writing its summary would count as done.
 #include <map>
 #include <optional>
 #include <string>
