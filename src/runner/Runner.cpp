@@ -108,8 +108,9 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
     j.member("ground_truth", args.ground_truth).member("alignment", "se3");
     j.member("pose_relation", "translation_part").member("unit", "m");
     j.member("pairs", a.pairs).member("max_pairs", a.max_pairs);
-    j.member("rmse", a.rmse).member("mean", a.mean).member("median", a.median);
-    j.member("std", a.std).member("min", a.min).member("max", a.max).member("sse", a.sse);
+    const evaluation::ErrorStatistics& st = a.statistics;
+    j.member("rmse", st.rmse).member("mean", st.mean).member("median", st.median);
+    j.member("std", st.std).member("min", st.min).member("max", st.max).member("sse", st.sse);
     j.endObject();
   } else if (!rec.ape_error.empty()) {
     j.member("ape_error", rec.ape_error);
@@ -356,7 +357,8 @@ int runDynslam(const RunnerArgs& args) {
               rec.wall_s, rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
   if (rec.ape)
     std::printf("dynslam: APE RMSE %.4f m (SE(3)-aligned, %zu of %zu poses associated) vs %s\n",
-                rec.ape->rmse, rec.ape->pairs, rec.ape->max_pairs, args.ground_truth.c_str());
+                rec.ape->statistics.rmse, rec.ape->pairs, rec.ape->max_pairs,
+                args.ground_truth.c_str());
   else if (!rec.ape_error.empty())
     std::printf("dynslam: no APE: %s\n", rec.ape_error.c_str());
   std::fflush(stdout);

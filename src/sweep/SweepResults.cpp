@@ -24,12 +24,9 @@ namespace ev = evaluation;
 void score(const std::string& gtPath, const std::string& estPath, JobResult& r) {
   const auto gt = core::readTum(gtPath);
   const auto est = core::readTum(estPath);
-  ev::AssociatedTrajectories pairs = ev::associateByTime(gt, est, 0.01);
-  const auto rpe = ev::computeRpe(pairs.first, pairs.second, ev::RpeOptions());
-  r.rpe = ev::computeStatistics(rpe.errors);
-  ev::alignTrajectory(pairs.first, pairs.second, ev::AlignmentMode::Se3, false);
-  r.ape = ev::computeStatistics(
-      ev::computeApe(pairs.first, pairs.second, ev::PoseRelation::TranslationPart));
+  const ev::AssociatedTrajectories pairs = ev::associateByTime(gt, est, 0.01);
+  r.rpe = ev::computeStatistics(ev::computeRpe(pairs.first, pairs.second, ev::RpeOptions()).errors);
+  r.ape = ev::evoApeSe3(gt, est, 0.01).statistics;
 }
 
 /// A CSV field: quoted when it holds a separator, a quote or a line break.

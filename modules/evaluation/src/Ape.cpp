@@ -1,5 +1,7 @@
 #include "dynslam/evaluation/Ape.h"
 
+#include "dynslam/evaluation/Alignment.h"
+#include "dynslam/evaluation/Association.h"
 #include "dynslam/evaluation/EvaluationError.h"
 
 namespace dynslam::evaluation {
@@ -25,6 +27,18 @@ std::vector<double> computeApe(const core::Trajectory& ref, const core::Trajecto
     }
   }
   return errors;
+}
+
+ApeSe3Result evoApeSe3(const core::Trajectory& ref, const core::Trajectory& est,
+                       double t_max_diff) {
+  AssociatedTrajectories pairs = associateByTime(ref, est, t_max_diff);
+  alignTrajectory(pairs.first, pairs.second, AlignmentMode::Se3, false);
+  ApeSe3Result r;
+  r.statistics =
+      computeStatistics(computeApe(pairs.first, pairs.second, PoseRelation::TranslationPart));
+  r.pairs = pairs.first.size();
+  r.max_pairs = pairs.max_pairs;
+  return r;
 }
 
 }  // namespace dynslam::evaluation
