@@ -104,6 +104,17 @@ void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig&
   options.loadFromConfigFile(cfg.ini(), section);
 }
 
+std::string readOneOf(const mrpt::config::CConfigFileBase& c, const std::string& section,
+                      const std::string& key, const std::string& current,
+                      const std::vector<std::string>& allowed) {
+  const std::string value = c.read_string(section, key, current);
+  if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return value;
+  std::string list;
+  for (size_t i = 0; i < allowed.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
+  throw std::invalid_argument(key + " = '" + value + "': expected " + list);
+}
+
 void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>& known) {
   for (const auto& s : cfg.sections())
     if (std::find(known.begin(), known.end(), s) == known.end())

@@ -109,3 +109,23 @@ TEST(Config, UnknownSectionIsAnError) {
     EXPECT_NE(std::string(e.what()).find("[Trakcer]"), std::string::npos) << e.what();
   }
 }
+
+namespace {
+enum class Shade { Light, Dark, Grey };
+constexpr Keyword<Shade> kShades[] = {
+    {"light", Shade::Light}, {"dark", Shade::Dark}, {"grey", Shade::Grey}};
+}  // namespace
+
+TEST(Config, KeywordKeysReadTheirWordsAndNameTheOthers) {
+  const auto cfg = IniConfig::fromText("[Ex]\nshade = dark\nother = black\n");
+  EXPECT_EQ(readKeyword(cfg.ini(), "Ex", "shade", Shade::Light, kShades), Shade::Dark);
+  EXPECT_EQ(readKeyword(cfg.ini(), "Ex", "absent", Shade::Grey, kShades), Shade::Grey)
+      << "the current value stays when the key is absent";
+  EXPECT_STREQ(wordOf(Shade::Grey, kShades), "grey");
+  try {
+    readKeyword(cfg.ini(), "Ex", "other", Shade::Light, kShades);
+    FAIL() << "black accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "other = 'black': expected light, dark or grey");
+  }
+}

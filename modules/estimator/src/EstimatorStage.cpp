@@ -12,14 +12,9 @@
 namespace dynslam::estimator {
 namespace {
 
-const char* handlingName(DynamicHandling h) {
-  switch (h) {
-    case DynamicHandling::None: return "none";
-    case DynamicHandling::Remove: return "remove";
-    case DynamicHandling::Full: return "full";
-  }
-  return "remove";
-}
+constexpr core::Keyword<DynamicHandling> kHandlings[] = {{"none", DynamicHandling::None},
+                                                         {"remove", DynamicHandling::Remove},
+                                                         {"full", DynamicHandling::Full}};
 
 }  // namespace
 
@@ -64,15 +59,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   imu_init.min_acceleration_rms =
       c.read_double(s, "init_min_acceleration_rms", imu_init.min_acceleration_rms);
   window.gravity = Eigen::Vector3d(0, 0, -imu_init.gravity_magnitude);
-  const std::string h = c.read_string(s, "dynamic_handling", handlingName(dynamic_handling));
-  if (h == "none")
-    dynamic_handling = DynamicHandling::None;
-  else if (h == "remove")
-    dynamic_handling = DynamicHandling::Remove;
-  else if (h == "full")
-    dynamic_handling = DynamicHandling::Full;
-  else
-    throw std::invalid_argument("dynamic_handling = '" + h + "': expected none, remove or full");
+  dynamic_handling = core::readKeyword(c, s, "dynamic_handling", dynamic_handling, kHandlings);
   nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
   rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
   use_gnss = c.read_bool(s, "use_gnss", use_gnss);
@@ -136,9 +123,10 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "max_acc_bias", max_acc_bias, "m/s^2; a larger accelerometer bias estimate is a failure");
   core::writeKey(c, s, "min_keyframe_features", min_keyframe_features,
                  "a frame with fewer static features makes no keyframe (its pose is predicted)");
-  core::writeKey(c, s, "dynamic_handling", std::string(handlingName(dynamic_handling)),
-        "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS); "
-        "full: the paper (see nonrigid_factors, rigid_factors)");
+  core::writeKey(
+      c, s, "dynamic_handling", std::string(core::wordOf(dynamic_handling, kHandlings)),
+      "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS); "
+      "full: the paper (see nonrigid_factors, rigid_factors)");
   core::writeKey(c, s, "nonrigid_factors", nonrigid_factors,
                  "with full: NonRigid features as constant-velocity world points (r_D)");
   core::writeKey(c, s, "rigid_factors", rigid_factors,

@@ -2,12 +2,13 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <stdexcept>
+
 namespace dynslam::frontend {
 namespace {
 
-const char* statisticName(SpeedStatistic s) {
-  return s == SpeedStatistic::MedianFlow ? "median_flow" : "mean_norm";
-}
+constexpr core::Keyword<SpeedStatistic> kStatistics[] = {
+    {"median_flow", SpeedStatistic::MedianFlow}, {"mean_norm", SpeedStatistic::MeanNorm}};
 
 }  // namespace
 
@@ -16,14 +17,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   auto& p = classifier;
   p.speed_threshold = c.read_double(s, "speed_threshold", p.speed_threshold);
   p.speed_window = c.read_int(s, "speed_window", p.speed_window);
-  const std::string stat = c.read_string(s, "speed_statistic", statisticName(p.speed_statistic));
-  if (stat == "median_flow")
-    p.speed_statistic = SpeedStatistic::MedianFlow;
-  else if (stat == "mean_norm")
-    p.speed_statistic = SpeedStatistic::MeanNorm;
-  else
-    throw core::ConfigError("[" + s + "] speed_statistic = '" + stat +
-                            "': expected median_flow or mean_norm");
+  p.speed_statistic = core::readKeyword(c, s, "speed_statistic", p.speed_statistic, kStatistics);
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
   p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
@@ -49,8 +43,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "m/s; an object moving faster (scene flow / time) is dynamic (method.md: 0.1)");
   core::writeKey(c, s, "speed_window", p.speed_window,
         "frames the scene flow spans at most (1: frame to frame, the method; see the header)");
-  core::writeKey(c, s, "speed_statistic", std::string(statisticName(p.speed_statistic)),
-        "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
+  core::writeKey(c, s, "speed_statistic", std::string(core::wordOf(p.speed_statistic, kStatistics)),
+                 "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
   core::writeKey(c, s, "speed_noise_sigmas", p.speed_noise_sigmas,
         "dynamic when speed > speed_threshold + this * the speed's noise (0: the method)");
   core::writeKey(c, s, "min_flow_features", p.min_flow_features,
@@ -80,7 +74,11 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
 }
 
 void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std::string& section) {
-  core::loadOptionsStrict(options_, cfg, section);
+  try {
+    core::loadOptionsStrict(options_, cfg, section);
+  } catch (const std::invalid_argument& e) {  // a keyword key with another word
+    throw core::ConfigError("[" + section + "] " + e.what() + " (in " + cfg.source() + ")");
+  }
   const auto& p = options_.classifier;
   auto fail = [&](const std::string& key, const std::string& value, const std::string& rule) {
     throw core::ConfigError("[" + section + "] " + key + " = " + value + " in " + cfg.source() +

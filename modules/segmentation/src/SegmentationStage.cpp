@@ -7,14 +7,15 @@
 namespace dynslam::segmentation {
 namespace {
 
-const char* clusterName(ObjectCluster c) {
-  switch (c) {
-    case ObjectCluster::Far: return "far";
-    case ObjectCluster::Larger: return "larger";
-    case ObjectCluster::OccluderAware: return "occluder_aware";
-  }
-  return "far";
-}
+constexpr core::Keyword<ObjectCluster> kClusters[] = {
+    {"far", ObjectCluster::Far},
+    {"larger", ObjectCluster::Larger},
+    {"occluder_aware", ObjectCluster::OccluderAware}};
+constexpr core::Keyword<OverlapRule> kOverlapRules[] = {
+    {"nearer", OverlapRule::Nearer}, {"closest_depth", OverlapRule::ClosestDepth}};
+constexpr core::Keyword<SegmentedBoxes> kBoxes[] = {
+    {"detections", SegmentedBoxes::Detections},
+    {"predicted_tracks", SegmentedBoxes::PredictedTracks}};
 
 }  // namespace
 
@@ -28,34 +29,9 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.e_other_nonrigid = c.read_double(s, "e_other_nonrigid", p.e_other_nonrigid);
   p.e_other_rigid = c.read_double(s, "e_other_rigid", p.e_other_rigid);
   p.min_valid_fraction = c.read_double(s, "min_valid_fraction", p.min_valid_fraction);
-  const std::string cluster = c.read_string(s, "object_cluster", clusterName(p.object_cluster));
-  if (cluster == "far")
-    p.object_cluster = ObjectCluster::Far;
-  else if (cluster == "larger")
-    p.object_cluster = ObjectCluster::Larger;
-  else if (cluster == "occluder_aware")
-    p.object_cluster = ObjectCluster::OccluderAware;
-  else
-    throw std::invalid_argument("object_cluster = '" + cluster +
-                                "': expected far (the method), larger or occluder_aware");
-  const std::string overlap =
-      c.read_string(s, "overlap_rule", p.overlap_rule == OverlapRule::Nearer ? "nearer" : "closest_depth");
-  if (overlap == "nearer")
-    p.overlap_rule = OverlapRule::Nearer;
-  else if (overlap == "closest_depth")
-    p.overlap_rule = OverlapRule::ClosestDepth;
-  else
-    throw std::invalid_argument("overlap_rule = '" + overlap +
-                                "': expected nearer (the method) or closest_depth");
-  const std::string which = c.read_string(
-      s, "boxes", boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks");
-  if (which == "detections")
-    boxes = SegmentedBoxes::Detections;
-  else if (which == "predicted_tracks")
-    boxes = SegmentedBoxes::PredictedTracks;
-  else
-    throw std::invalid_argument("boxes = '" + which +
-                                "': expected detections or predicted_tracks");
+  p.object_cluster = core::readKeyword(c, s, "object_cluster", p.object_cluster, kClusters);
+  p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
+  boxes = core::readKeyword(c, s, "boxes", boxes, kBoxes);
 }
 
 void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -69,18 +45,19 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
   core::writeKey(c, s, "min_valid_fraction", p.min_valid_fraction,
         "of the m samples with depth, else the mask is not valid (empty)");
-  core::writeKey(c, s, "object_cluster", std::string(clusterName(p.object_cluster)),
-        "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
-        "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
-        "variants, not the method)");
-  core::writeKey(c, s, "overlap_rule",
-        std::string(p.overlap_rule == OverlapRule::Nearer ? "nearer" : "closest_depth"),
-        "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
-        "the object whose d_t is closest to the pixel's depth (not the method)");
-  core::writeKey(c, s, "boxes",
-        std::string(boxes == SegmentedBoxes::Detections ? "detections" : "predicted_tracks"),
-        "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "
-        "tracks no detection took this frame (list the stage again after Tracking)");
+  core::writeKey(
+      c, s, "object_cluster", std::string(core::wordOf(p.object_cluster, kClusters)),
+      "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
+      "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
+      "variants, not the method)");
+  core::writeKey(
+      c, s, "overlap_rule", std::string(core::wordOf(p.overlap_rule, kOverlapRules)),
+      "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
+      "the object whose d_t is closest to the pixel's depth (not the method)");
+  core::writeKey(
+      c, s, "boxes", std::string(core::wordOf(boxes, kBoxes)),
+      "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "
+      "tracks no detection took this frame (list the stage again after Tracking)");
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {

@@ -2,6 +2,7 @@
 // ini configuration the MRPT way (CConfigFileBase sections, CLoadableOptions structs), with the
 // two rules this project adds: `--set section.key=value` overrides, and no silent typos (an
 // unknown key or section is an error that names it).
+#include <cstddef>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -64,6 +65,40 @@ void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, cons
               const std::string& value, const std::string& comment);
 void writeKey(mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
               const char* value, const std::string& comment);
+
+/// An ini value that is one of a few words, each standing for an enum value (dynamic_handling =
+/// none | remove | full, ...): one table per key serves reading, writing and the error.
+template <class E>
+struct Keyword {
+  const char* word;
+  E value;
+};
+
+/// Reads `key` of `section` as one of `allowed` (default: `current`); throws
+/// std::invalid_argument "key = 'value': expected a, b or c" for any other word.
+std::string readOneOf(const mrpt::config::CConfigFileBase& c, const std::string& section,
+                      const std::string& key, const std::string& current,
+                      const std::vector<std::string>& allowed);
+
+/// The word of `value` in `words` (the first word when the value has none).
+template <class E, std::size_t N>
+const char* wordOf(E value, const Keyword<E> (&words)[N]) {
+  for (const auto& w : words)
+    if (w.value == value) return w.word;
+  return words[0].word;
+}
+
+/// readOneOf with the words of `words`, returned as their enum value.
+template <class E, std::size_t N>
+E readKeyword(const mrpt::config::CConfigFileBase& c, const std::string& section,
+              const std::string& key, E current, const Keyword<E> (&words)[N]) {
+  std::vector<std::string> allowed;
+  for (const auto& w : words) allowed.push_back(w.word);
+  const std::string read = readOneOf(c, section, key, wordOf(current, words), allowed);
+  for (const auto& w : words)
+    if (read == w.word) return w.value;
+  return current;  // not reached: readOneOf accepts only the listed words
+}
 
 /// Sees the options structs loadOptionsStrict loads, before it loads them (so they still hold
 /// their defaults). The parameter reference (dynslam-params) configures every registered stage
