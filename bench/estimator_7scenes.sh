@@ -5,6 +5,7 @@
 #   bash bench/estimator_7scenes.sh [--build DIR] [--out DIR]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/bench/lib.sh"
 BUILD="$ROOT/build"; OUT="/tmp/dynslam-7scenes"
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -22,9 +23,8 @@ mkdir -p "$OUT"
   --quiet > "$OUT/run.log" 2>&1
 "$BIN/dynslam-eval" ape "$OUT/7scenes.gt.tum" "$OUT/run/trajectory.tum" --align se3 \
   --json "$OUT/run/ape.json" > /dev/null
-value() { sed -n "s/^ *\"$2\": *\([0-9.eE+-]*\).*/\1/p" "$1" | head -1; }
-awk -v ape="$(value "$OUT/run/ape.json" rmse)" -v solve="$(value "$OUT/run/summary.json" solve_ms_median)" \
-    -v fps="$(value "$OUT/run/summary.json" fps)" -v kf="$(value "$OUT/run/summary.json" keyframes)" \
+awk -v ape="$(jsonField "$OUT/run/ape.json" rmse)" -v solve="$(jsonField "$OUT/run/summary.json" solve_ms_median)" \
+    -v fps="$(jsonField "$OUT/run/summary.json" fps)" -v kf="$(jsonField "$OUT/run/summary.json" keyframes)" \
   'BEGIN {
      printf "7-Scenes, RGB-D only: APE RMSE %.4f m (target 0.05: ratio %.2f; aim 0.03: ratio %.2f)\n", ape, ape / 0.05, ape / 0.03
      printf "window solve median %.1f ms per keyframe over %d keyframes (target 30 ms: ratio %.2f); %.1f FPS\n", solve, kf, solve / 30, fps

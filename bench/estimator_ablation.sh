@@ -23,6 +23,7 @@
 # object poses at keyframes, composed in between.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/bench/lib.sh"
 BUILD="$ROOT/build"; OUT="/tmp/dynslam-ablation"; DURATION=20
 SCENARIOS="static indoor_people_high outdoor_street_high market_crowd_high"
 while [ $# -gt 0 ]; do
@@ -40,7 +41,6 @@ for p in dynslam dynslam-sim dynslam-eval; do
 done
 mkdir -p "$OUT"
 
-json() { sed -n "s/^ *\"$2\": *\([0-9.eE+-]*\).*/\1/p" "$1" | head -1; }
 pathLength() {
   awk '!/^#/ { if (n++) d += sqrt(($2-x)^2 + ($3-y)^2 + ($4-z)^2); x=$2; y=$3; z=$4 } END { printf "%.2f", d }' "$1"
 }
@@ -104,10 +104,10 @@ for sc in $SCENARIOS; do
       "$BIN/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align-origin \
         --json "$R/ape.json" > /dev/null 2>&1 || true
     fi
-    ape[$v]=$( [ -f "$R/ape.json" ] && json "$R/ape.json" rmse || true)
-    solve=$(json "$R/summary.json" solve_ms_median 2>/dev/null || true)
-    restarts=$(json "$R/summary.json" resets 2>/dev/null || true)
-    perKf=$(json "$R/summary.json" rigid_objects_per_keyframe 2>/dev/null || true)
+    ape[$v]=$( [ -f "$R/ape.json" ] && jsonField "$R/ape.json" rmse || true)
+    solve=$(jsonField "$R/summary.json" solve_ms_median 2>/dev/null || true)
+    restarts=$(jsonField "$R/summary.json" resets 2>/dev/null || true)
+    perKf=$(jsonField "$R/summary.json" rigid_objects_per_keyframe 2>/dev/null || true)
     pct=$(awk -v a="${ape[$v]:-nan}" -v l="$length" 'BEGIN { printf "%.3f", 100 * a / l }')
     shown=$(awk -v a="${ape[$v]:-}" 'BEGIN { if (a == "") print "failed"; else printf "%.4f", a }')
     printf '%-20s %-17s %9s %5s %8s %9.1f %8s %11.2f\n' "$sc" "$v" "$shown" "$align" "$pct" \

@@ -7,6 +7,7 @@
 #   bash bench/estimator_faults.sh [--build DIR] [--out DIR] [--scenario NAME] [--duration S]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/bench/lib.sh"
 BUILD="$ROOT/build"; OUT="/tmp/dynslam-faults"; SCENARIO=indoor_people_low; DURATION=20
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -26,7 +27,6 @@ S="$OUT/$SCENARIO"
   --set Detection.objects="$S/objects.txt" > "$S/run.log" 2>&1 || true
 "$BIN/dynslam-eval" ape "$S/groundtruth.tum" "$S/run/trajectory.tum" --align se3 \
   --json "$S/run/ape.json" > /dev/null 2>&1 || true
-value() { sed -n "s/^ *\"$2\": *\"\{0,1\}\([^\",]*\).*/\1/p" "$1" | head -1; }
 jump=$(awk 'FNR == 1 { f++ } /^#/ { next }
   f == 1 { gt[sprintf("%.3f", $1)] = $2 " " $3 " " $4; next }
   { key = sprintf("%.3f", $1); split(gt[key], g, " ")
@@ -37,6 +37,6 @@ jump=$(awk 'FNR == 1 { f++ } /^#/ { next }
     px = $2; py = $3; pz = $4; gx = g[1]; gy = g[2]; gz = g[3] }
   END { printf "%.3f m at t = %.2f s", worst, at - 1700000000 }' "$S/groundtruth.tum" "$S/run/trajectory.tum")
 echo "faults: IMU gap 8-9 s, black frames 300-319, no depth 450-459 ($SCENARIO, $DURATION s)"
-echo "status $(value "$S/run/summary.json" status), frames $(value "$S/run/summary.json" frames), APE RMSE $(value "$S/run/ape.json" rmse) m"
-echo "restarts $(value "$S/run/summary.json" resets), IMU gaps seen $(value "$S/run/summary.json" imu_gaps), frames without a keyframe-worthy view $(value "$S/run/summary.json" blind_frames)"
+echo "status $(jsonField "$S/run/summary.json" status), frames $(jsonField "$S/run/summary.json" frames), APE RMSE $(jsonField "$S/run/ape.json" rmse) m"
+echo "restarts $(jsonField "$S/run/summary.json" resets), IMU gaps seen $(jsonField "$S/run/summary.json" imu_gaps), frames without a keyframe-worthy view $(jsonField "$S/run/summary.json" blind_frames)"
 echo "worst trajectory jump (|estimated - true| distance between consecutive frames): $jump"

@@ -7,6 +7,7 @@
 #       [--dynslam-args "--no-map ..."]   (extra arguments for the dynslam run)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/bench/lib.sh"
 BUILD="$ROOT/build"; OUT="/tmp/dynslam-soak"; FRAMES=10000; SCENARIO=indoor_people_low; EXTRA=""
 
 while [ $# -gt 0 ]; do
@@ -44,8 +45,8 @@ done
 wait "$pid" || true
 elapsed=$(( $(date +%s) - start ))
 
-fps=$(sed -n 's/^ *"fps": *\([0-9.]*\).*/\1/p' "$R/summary.json" | head -1)
-status=$(sed -n 's/^ *"status": *"\([a-z]*\)".*/\1/p' "$R/summary.json" | head -1)
+fps=$(jsonField "$R/summary.json" fps)
+status=$(jsonField "$R/summary.json" status)
 # The sample taken when about 1,000 frames had been processed (frames = seconds x fps).
 awk -v fps="$fps" -v total="$elapsed" '
   { t[NR] = $1; m[NR] = $2 }
@@ -56,4 +57,4 @@ awk -v fps="$fps" -v total="$elapsed" '
     printf "resident memory: %.1f MB after ~1000 frames (t = %d s), %.1f MB at the end (t = %d s): growth %.2f %% (target < 5 %%)\n", m[k] / 1024, t[k], m[NR] / 1024, t[NR], growth
   }' "$R.rss"
 "$BIN/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align se3 --json "$R/ape.json" > /dev/null 2>&1 || true
-echo "status $status, $FRAMES frames in ${elapsed} s ($fps FPS), APE RMSE $(sed -n 's/^ *"rmse": *\([0-9.e+-]*\).*/\1/p' "$R/ape.json" | head -1) m, restarts $(sed -n 's/^ *"resets": *\([0-9]*\).*/\1/p' "$R/summary.json" | head -1)"
+echo "status $status, $FRAMES frames in ${elapsed} s ($fps FPS), APE RMSE $(jsonField "$R/ape.json" rmse) m, restarts $(jsonField "$R/summary.json" resets)"
