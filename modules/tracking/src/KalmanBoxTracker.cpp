@@ -31,39 +31,54 @@ void KalmanBoxTracker::predict(double t) {
   }
 }
 
+namespace {
+
+/// One assignment round: the tracks `trackTakes` admits that have no observation yet against the
+/// observations `observationTakes` admits that are not used yet, by the Hungarian algorithm on
+/// `gain(track, observation)` (0: the pair is refused; pairs of different categories always
+/// are), a pair kept when its gain is > 0.
+template <class Tracks, class TrackTakes, class ObservationTakes, class Gain>
+void assignRound(const Tracks& tracked, const std::vector<BoxObservation>& observations,
+                 TrackTakes trackTakes, ObservationTakes observationTakes, Gain gain,
+                 std::vector<int>& observationOf, std::vector<char>& observationUsed) {
+  std::vector<int> rows, cols;
+  for (size_t i = 0; i < tracked.size(); ++i)
+    if (observationOf[i] < 0 && trackTakes(tracked[i])) rows.push_back(int(i));
+  for (size_t j = 0; j < observations.size(); ++j)
+    if (!observationUsed[j] && observationTakes(observations[j])) cols.push_back(int(j));
+  if (rows.empty() || cols.empty()) return;
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(rows.size(), cols.size());
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (size_t c = 0; c < cols.size(); ++c) {
+      const BoxObservation& o = observations[cols[c]];
+      if (o.category == tracked[rows[r]].track.category) g(r, c) = gain(tracked[rows[r]], o);
+    }
+  const std::vector<int> assigned = core::solveMaxGainAssignment(g);
+  for (size_t r = 0; r < rows.size(); ++r)
+    if (assigned[r] >= 0 && g(r, assigned[r]) > 0) {
+      observationOf[rows[r]] = cols[assigned[r]];
+      observationUsed[cols[assigned[r]]] = 1;
+    }
+}
+
+}  // namespace
+
 void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations,
                                  const cv::Size& image, double threshold, bool coastingOnly,
                                  std::vector<int>& observationOf,
                                  std::vector<char>& observationUsed) const {
-  std::vector<int> rows, cols;
-  for (size_t i = 0; i < tracked_.size(); ++i)
-    if (observationOf[i] < 0 && (!coastingOnly || tracked_[i].track.misses > 0))
-      rows.push_back(int(i));
-  for (size_t j = 0; j < observations.size(); ++j)
-    if (!observationUsed[j]) cols.push_back(int(j));
-  if (rows.empty() || cols.empty()) return;
-
-  // rho of every (track, observation) pair; 0 where the categories differ or rho <= threshold.
-  Eigen::MatrixXd rho = Eigen::MatrixXd::Zero(rows.size(), cols.size());
   const cv::Rect2f frame(0, 0, float(image.width), float(image.height));
-  for (size_t r = 0; r < rows.size(); ++r) {
-    const Tracked& tr = tracked_[rows[r]];
-    // Detectors clip their boxes to the image: compare like with like.
-    const cv::Rect2f predicted = image.empty() ? tr.filter.box() : tr.filter.box() & frame;
-    const double depth = tr.filter.state()(kD);
-    for (size_t c = 0; c < cols.size(); ++c) {
-      const BoxObservation& o = observations[cols[c]];
-      if (o.category != tr.track.category) continue;
-      const double value = depthIoU(predicted, depth, o.box, o.depth);
-      if (value > threshold) rho(r, c) = value;
-    }
-  }
-  const std::vector<int> assigned = core::solveMaxGainAssignment(rho);
-  for (size_t r = 0; r < rows.size(); ++r)
-    if (assigned[r] >= 0 && rho(r, assigned[r]) > threshold) {
-      observationOf[rows[r]] = cols[assigned[r]];
-      observationUsed[cols[assigned[r]]] = 1;
-    }
+  assignRound(
+      tracked_, observations,
+      [&](const Tracked& tr) { return !coastingOnly || tr.track.misses > 0; },
+      [](const BoxObservation&) { return true; },
+      [&](const Tracked& tr, const BoxObservation& o) {
+        // Detectors clip their boxes to the image: compare like with like.
+        const cv::Rect2f predicted = image.empty() ? tr.filter.box() : tr.filter.box() & frame;
+        const double value = depthIoU(predicted, tr.filter.state()(kD), o.box, o.depth);
+        return value > threshold ? value : 0.0;
+      },
+      observationOf, observationUsed);
 }
 
 void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
@@ -112,39 +127,25 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
 void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observations,
                                   std::vector<int>& observationOf,
                                   std::vector<char>& observationUsed) const {
-  std::vector<int> rows, cols;
-  for (size_t i = 0; i < tracked_.size(); ++i)
-    if (observationOf[i] < 0 && !tracked_[i].appearance.empty() &&
-        tracked_[i].track.state == core::TrackState::Confirmed)
-      rows.push_back(int(i));
-  for (size_t j = 0; j < observations.size(); ++j)
-    if (!observationUsed[j] && !observations[j].appearance.empty()) cols.push_back(int(j));
-  if (rows.empty() || cols.empty()) return;
-  Eigen::MatrixXd gain = Eigen::MatrixXd::Zero(rows.size(), cols.size());
-  for (size_t r = 0; r < rows.size(); ++r) {
-    const Tracked& tr = tracked_[rows[r]];
-    const cv::Rect2f predicted = tr.filter.box();
-    const double depth = tr.filter.state()(kD);
-    for (size_t c = 0; c < cols.size(); ++c) {
-      const BoxObservation& o = observations[cols[c]];
-      if (o.category != tr.track.category) continue;
-      const double distance = appearanceDistance(tr.appearance, o.appearance);
-      const cv::Point2f shift =
-          (o.box.tl() + o.box.br()) * 0.5f - (predicted.tl() + predicted.br()) * 0.5f;
-      const double height = std::max(o.box.height, predicted.height);
-      const bool depthAgrees =
-          !(depth > 0 && o.depth > 0) || std::max(depth, o.depth) < 1.5 * std::min(depth, o.depth);
-      if (distance < params_.reid_max_distance && depthAgrees &&
-          std::hypot(shift.x, shift.y) <= params_.reid_max_shift * height)
-        gain(r, c) = 1.0 - distance;
-    }
-  }
-  const std::vector<int> assigned = core::solveMaxGainAssignment(gain);
-  for (size_t r = 0; r < rows.size(); ++r)
-    if (assigned[r] >= 0 && gain(r, assigned[r]) > 0) {
-      observationOf[rows[r]] = cols[assigned[r]];
-      observationUsed[cols[assigned[r]]] = 1;
-    }
+  assignRound(
+      tracked_, observations,
+      [](const Tracked& tr) {
+        return !tr.appearance.empty() && tr.track.state == core::TrackState::Confirmed;
+      },
+      [](const BoxObservation& o) { return !o.appearance.empty(); },
+      [&](const Tracked& tr, const BoxObservation& o) {
+        const cv::Rect2f predicted = tr.filter.box();
+        const double depth = tr.filter.state()(kD);
+        const double distance = appearanceDistance(tr.appearance, o.appearance);
+        const cv::Point2f shift =
+            (o.box.tl() + o.box.br()) * 0.5f - (predicted.tl() + predicted.br()) * 0.5f;
+        const double height = std::max(o.box.height, predicted.height);
+        const bool depthAgrees = !(depth > 0 && o.depth > 0) ||
+                                 std::max(depth, o.depth) < 1.5 * std::min(depth, o.depth);
+        const bool near = std::hypot(shift.x, shift.y) <= params_.reid_max_shift * height;
+        return distance < params_.reid_max_distance && depthAgrees && near ? 1.0 - distance : 0.0;
+      },
+      observationOf, observationUsed);
 }
 
 void KalmanBoxTracker::restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box,
