@@ -426,19 +426,22 @@ std::vector<std::pair<std::int64_t, Eigen::Vector3d>> SlidingWindow::landmarkPos
   return out;
 }
 
+SlidingWindow::Keyframe* SlidingWindow::keyframeAt(double t) {
+  for (Keyframe& k : keyframes_)
+    if (std::abs(k.t - t) < 1e-9) return &k;
+  return nullptr;
+}
+
 std::optional<Eigen::Vector3d> SlidingWindow::antennaAt(double t) const {
-  for (const Keyframe& k : keyframes_)
-    if (std::abs(k.t - t) < 1e-9) return poseFromBlock(k.pose) * params_.gnss_lever_arm;
-  return std::nullopt;
+  const Keyframe* k = const_cast<SlidingWindow*>(this)->keyframeAt(t);
+  if (!k) return std::nullopt;
+  return poseFromBlock(k->pose) * params_.gnss_lever_arm;
 }
 
 bool SlidingWindow::addGnssTarget(const GnssTarget& target) {
-  for (Keyframe& k : keyframes_)
-    if (std::abs(k.t - target.t) < 1e-9) {
-      k.gnss = target;
-      return true;
-    }
-  return false;
+  Keyframe* k = keyframeAt(target.t);
+  if (k) k->gnss = target;
+  return k != nullptr;
 }
 
 }  // namespace dynslam::estimator

@@ -195,6 +195,8 @@ class SlidingWindow {
   double depthIn(const Keyframe& k, const Eigen::Vector3d& world) const;
   Keyframe* keyframe(std::int64_t id);
   const Keyframe* keyframe(std::int64_t id) const;
+  /// The keyframe stamped `t` (the time the caller gave it), null when it has left the window.
+  Keyframe* keyframeAt(double t);
 
   SlidingWindowParams params_;
   PinholeCamera camera_;
