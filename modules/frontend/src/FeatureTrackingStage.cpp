@@ -2,6 +2,8 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include "dynslam/core/Median.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -94,6 +96,8 @@ void FeatureTrackingStage::process(core::Frame& frame) {
   lostKlt_ += size_t(s.lost_klt);
   lostFb_ += size_t(s.lost_fb);
   lostRansac_ += size_t(s.lost_ransac);
+  trackingMs_.push_back(s.ms_pyramid + s.ms_klt + s.ms_ransac);
+  extractionMs_.push_back(s.ms_detect);
   std::map<std::int64_t, int> alive;
   for (const auto& f : frame.features) alive.emplace(f.id, f.track_length);
   for (const auto& [id, length] : alive_)
@@ -125,7 +129,9 @@ std::vector<std::pair<std::string, double>> FeatureTrackingStage::statistics() c
           {"mean_track_length", ended_ ? endedLengthSum_ / double(ended_) : 0},
           {"lost_klt_fraction", double(lostKlt_) / in},
           {"lost_forward_backward_fraction", double(lostFb_) / in},
-          {"lost_ransac_fraction", double(lostRansac_) / in}};
+          {"lost_ransac_fraction", double(lostRansac_) / in},
+          {"tracking_ms_median", core::upperMedian(trackingMs_)},
+          {"extraction_ms_median", core::upperMedian(extractionMs_)}};
 }
 
 }  // namespace dynslam::frontend

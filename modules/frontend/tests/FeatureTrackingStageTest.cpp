@@ -128,6 +128,9 @@ TEST(FeatureTrackingStage, WritesStaticFeaturesWithIdsAndDepth) {
   EXPECT_GT(stat("mean_track_length"), 1.0);
   EXPECT_LT(stat("mean_track_length"), 2.0);
   EXPECT_EQ(stat("gyro_frames"), 0) << "no IMU samples";
+  // Each frame built a pyramid and extracted corners: both parts were timed (paper Table 8).
+  EXPECT_GT(stat("tracking_ms_median"), 0.0);
+  EXPECT_GT(stat("extraction_ms_median"), 0.0);
   core::Frame noColour = texturedFrame(2, 0);
   noColour.rgb.release();
   EXPECT_THROW(stage.process(noColour), std::invalid_argument);
