@@ -44,17 +44,7 @@ mkdir -p "$OUT"
 pathLength() {
   awk '!/^#/ { if (n++) d += sqrt(($2-x)^2 + ($3-y)^2 + ($4-z)^2); x=$2; y=$3; z=$4 } END { printf "%.2f", d }' "$1"
 }
-variantSettings() {
-  case "$1" in
-    none) echo "--set Estimator.dynamic_handling=none" ;;
-    remove) echo "--set Estimator.dynamic_handling=remove" ;;
-    full) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=true --set Estimator.nonrigid_factors=true" ;;
-    full-no-rigid) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=false --set Estimator.nonrigid_factors=true" ;;
-    full-no-nonrigid) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=true --set Estimator.nonrigid_factors=false" ;;
-    # The simulator's receiver: RTK-like, 2 cm at HDOP 0.8, antenna 0.5 m above the body origin.
-    full-gnss) echo "--set Estimator.dynamic_handling=full --set Estimator.use_gnss=true --set Estimator.gnss_uere_horizontal=0.025 --set Estimator.gnss_lever_arm_z=0.5" ;;
-  esac
-}
+# variantSettings: bench/lib.sh
 # objectApe SCENARIO_DIR RUN_DIR: "tracks N median X" over the run's object trajectories.
 objectApe() {
   local S="$1" R="$2" g f n r best

@@ -3,3 +3,20 @@
 # jsonField FILE KEY: the value of the first `"KEY": value` line of FILE (dynslam's summary.json,
 # dynslam-eval's --json), a number or a string without its quotes; empty when absent.
 jsonField() { sed -n "s/^ *\"$2\": *\"\{0,1\}\([^\",]*\).*/\1/p" "$1" | head -1; }
+
+# variantSettings NAME: dynslam's --set options for an estimator variant (params/sim_vio.ini);
+# the variants are described in bench/estimator_ablation.sh. full-no-both: the paper's Table 9
+# "without rigid & non-rigid" (the full estimator with both kinds of dynamic feature dropped).
+variantSettings() {
+  case "$1" in
+    none) echo "--set Estimator.dynamic_handling=none" ;;
+    remove) echo "--set Estimator.dynamic_handling=remove" ;;
+    full) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=true --set Estimator.nonrigid_factors=true" ;;
+    full-no-rigid) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=false --set Estimator.nonrigid_factors=true" ;;
+    full-no-nonrigid) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=true --set Estimator.nonrigid_factors=false" ;;
+    full-no-both) echo "--set Estimator.dynamic_handling=full --set Estimator.rigid_factors=false --set Estimator.nonrigid_factors=false" ;;
+    # The simulator's receiver: RTK-like, 2 cm at HDOP 0.8, antenna 0.5 m above the body origin.
+    full-gnss) echo "--set Estimator.dynamic_handling=full --set Estimator.use_gnss=true --set Estimator.gnss_uere_horizontal=0.025 --set Estimator.gnss_lever_arm_z=0.5" ;;
+    *) echo "variantSettings: unknown variant '$1'" >&2; return 1 ;;
+  esac
+}
