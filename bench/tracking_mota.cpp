@@ -28,8 +28,10 @@
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
 #include <dynslam/evaluation/MotMetrics.h>
+#include <dynslam/tracking/Appearance.h>
 #include <dynslam/tracking/KalmanBoxTracker.h>
 #include <dynslam/tracking/TrackingStage.h>
+#include <opencv2/core.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -37,6 +39,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace {
 
@@ -49,6 +52,7 @@ struct TrackerRun {
   std::vector<double> ms;  // tracker time per frame
   int tracks_started = 0;
   double objects_per_frame = 0;
+  std::vector<evaluation::MotFrame> frames;  // what was scored
 };
 
 TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerParams& params,
@@ -76,15 +80,99 @@ TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerPara
     mot.push_back(std::move(m));
   }
   r.mot = evaluation::evaluateMot(mot);
+  r.frames = std::move(mot);
   r.tracks_started = tracker.tracksStarted();
   r.objects_per_frame = run.frames.empty() ? 0 : double(observations) / run.frames.size();
   return r;
+}
+
+/// --identities: per truth id, the tracks that covered it in turn ("track 5 frames 0-120, track 9
+/// 121-300"), each counted frame given to the hypothesis of largest IoU >= 0.5 (a reading aid
+/// for IDF1: a track that appears under two truths is a swap, a new track a fragment).
+void printIdentities(const std::vector<evaluation::MotFrame>& frames) {
+  std::map<int, std::vector<std::tuple<int, int, int>>> runs;  // truth -> (track, first, last)
+  for (size_t i = 0; i < frames.size(); ++i)
+    for (const auto& t : frames[i].truth) {
+      if (!t.counted) continue;
+      int best = 0;
+      double bestIou = 0.5;
+      for (const auto& h : frames[i].hypotheses) {
+        const double iou = (t.box & h.box).area() / (t.box | h.box).area();
+        if (iou >= bestIou) bestIou = iou, best = h.id;
+      }
+      auto& r = runs[t.id];
+      if (!r.empty() && std::get<0>(r.back()) == best)
+        std::get<2>(r.back()) = int(i);
+      else
+        r.emplace_back(best, int(i), int(i));
+    }
+  std::printf("\nidentities (truth: track[first-last] ..., track 0 = none)\n");
+  for (const auto& [truth, r] : runs) {
+    std::printf("  %d:", truth);
+    for (const auto& [track, first, last] : r)
+      if (track != 0 || last - first >= 5) std::printf(" %d[%d-%d]", track, first, last);
+    std::printf("\n");
+  }
 }
 
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
   return v[std::min(v.size() - 1, size_t(p * v.size()))];
+}
+
+/// How well the appearance descriptor tells people apart: its distance between one person's
+/// detections one detector frame apart, and between two people's detections in one frame.
+void printAppearanceSeparation(const CachedRun& run) {
+  std::vector<double> same, different;
+  for (size_t i = 0; i < run.frames.size(); ++i) {
+    const auto& f = run.frames[i];
+    for (size_t a = 0; a < f.observations.size(); ++a) {
+      if (f.observations[a].appearance.empty() || f.observation_truth[a] < 0) continue;
+      for (size_t b = a + 1; b < f.observations.size(); ++b)
+        if (f.observation_truth[b] >= 0 && f.observation_truth[b] != f.observation_truth[a])
+          different.push_back(tracking::appearanceDistance(f.observations[a].appearance,
+                                                           f.observations[b].appearance));
+      if (i == 0) continue;
+      const auto& p = run.frames[i - 1];
+      for (size_t b = 0; b < p.observations.size(); ++b)
+        if (p.observation_truth[b] == f.observation_truth[a])
+          same.push_back(tracking::appearanceDistance(f.observations[a].appearance,
+                                                      p.observations[b].appearance));
+    }
+  }
+  if (same.empty() || different.empty()) return;
+  // Each person's mean descriptor over the run: how often a detection is nearest its own
+  // person's (an upper bound on what the cue can decide alone).
+  std::map<int, cv::Mat> mean;
+  std::map<int, int> count;
+  for (const auto& f : run.frames)
+    for (size_t a = 0; a < f.observations.size(); ++a)
+      if (!f.observations[a].appearance.empty() && f.observation_truth[a] >= 0) {
+        cv::Mat& m = mean[f.observation_truth[a]];
+        m = m.empty() ? f.observations[a].appearance.clone() : m + f.observations[a].appearance;
+        ++count[f.observation_truth[a]];
+      }
+  for (auto& [id, m] : mean) m /= double(count[id]);
+  size_t nearestOwn = 0, described = 0;
+  for (const auto& f : run.frames)
+    for (size_t a = 0; a < f.observations.size(); ++a) {
+      if (f.observations[a].appearance.empty() || f.observation_truth[a] < 0) continue;
+      double own = 1, other = 1;
+      for (const auto& [id, m] : mean) {
+        double& d = id == f.observation_truth[a] ? own : other;
+        d = std::min(d, tracking::appearanceDistance(m, f.observations[a].appearance));
+      }
+      nearestOwn += own < other;
+      ++described;
+    }
+  std::printf(
+      "appearance      distance, same person one frame apart: median %.2f, p90 %.2f, p99 %.2f; "
+      "two people in one frame: p1 %.2f, p10 %.2f, median %.2f; nearest its own person's mean "
+      "in %.1f %%\n",
+      percentile(same, 0.5), percentile(same, 0.9), percentile(same, 0.99),
+      percentile(different, 0.01), percentile(different, 0.1), percentile(different, 0.5),
+      100.0 * nearestOwn / described);
 }
 
 tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& overrides) {
@@ -164,6 +252,8 @@ void benchSimulation(const BenchSettings& s) {
       "(target <= 0.2 ms; ratio %.3f)\n",
       med, percentile(main.ms, 0.9), main.objects_per_frame, med / 0.2);
   std::printf("(render, detect and segment: %.1f s)\n", prepSeconds);
+  printAppearanceSeparation(run);
+  if (s.identities) printIdentities(main.frames);
   if (s.sweep.empty()) return;
   // "Tracking.key=v1,v2,...": one run per value, the other settings as above.
   const size_t eq = s.sweep.find('=');
@@ -190,7 +280,7 @@ int main(int argc, char** argv) {
     core::CommandLine cl(
         {"--config", "--frames", "--miss-rate", "--jitter", "--min-visible", "--seed", "--depth",
          "--report-coasting", "--video", "--model", "--strip", "--video-frames", "--sweep"},
-        {}, {"--set"});
+        {"--identities"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << "usage: bench-tracking [--config INI] [--frames N] [--miss-rate 0.1] "
@@ -212,6 +302,7 @@ int main(int argc, char** argv) {
       throw core::UsageError("--depth must be segmentation, truth or box, not '" + s.depth + "'");
     s.report_coasting = int(cl.optionalInteger("--report-coasting").value_or(s.report_coasting));
     s.sweep = cl.valueOr("--sweep", s.sweep);
+    s.identities = cl.has("--identities");
     for (const auto& o : cl.all("--set"))
       (o.rfind("Tracking.", 0) == 0         ? s.tracker_overrides
        : o.rfind("Segmentation.", 0) == 0 ? s.segmentation_overrides

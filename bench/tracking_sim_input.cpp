@@ -110,6 +110,7 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
       const auto& d = frame.detections[k];
       c.observations.push_back({d.box, tracking::measuredObjectDepth(frame, k), d.category, d.model,
                                 tracking::observationAppearance(frame, k)});
+      c.observation_truth.push_back(d.truth_id > 0 ? int(d.truth_id) : -1);
       for (const auto& o : sf.objects)
         if (o.id == d.truth_id) {
           const double truthDepth = trueDepth(sf, o);

@@ -22,6 +22,7 @@ struct BenchSettings {
   uint32_t seed = 1;
   std::string depth = "segmentation";
   int report_coasting = 1;
+  bool identities = false;  // print which tracks covered each truth id
   std::string sweep = "Tracking.rho_min=0.3,0.5,0.6,0.7,0.8";  // "": none
   std::vector<std::string> sim_overrides, tracker_overrides;
   std::vector<std::string> segmentation_overrides;  // "Segmentation.key=value" (--set)
@@ -31,6 +32,7 @@ struct BenchSettings {
 struct CachedFrame {
   double t = 0;
   std::vector<tracking::BoxObservation> observations;
+  std::vector<int> observation_truth;  // the truth id of each observation (-1: false positive)
   std::vector<evaluation::MotTruthBox> truth;
 };
 

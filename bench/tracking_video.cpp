@@ -57,7 +57,7 @@ void benchVideo(const VideoBenchSettings& s) {
     const bool appearance = tracker.params().reid_max_distance > 0;
     for (const auto& d : dets)
       obs.push_back({d.box, 0.0, d.category, d.model,
-                     appearance ? tracking::torsoHistogram(bgr, d.box) : cv::Mat()});
+                     appearance ? tracking::bodyHistogram(bgr, d.box) : cv::Mat()});
     tracker.predict(i / fps);
     tracker.update(obs, bgr.size());
     const auto tracks = tracker.tracks();

@@ -1,4 +1,5 @@
 #include "dynslam/tracking/Appearance.h"
+#include "dynslam/tracking/ObjectDepth.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -6,21 +7,24 @@
 #include <cmath>
 
 namespace dynslam::tracking {
+namespace {
 
-cv::Mat torsoHistogram(const cv::Mat& bgr, const cv::Rect2f& box) {
-  if (bgr.empty() || bgr.type() != CV_8UC3) return {};
-  const cv::Rect torso =
-      cv::Rect(cvRound(box.x + 0.25f * box.width), cvRound(box.y + 0.2f * box.height),
-               cvRound(0.5f * box.width), cvRound(0.4f * box.height)) &
-      cv::Rect(0, 0, bgr.cols, bgr.rows);
-  if (torso.area() < 50) return {};
+/// Adds the hue-saturation histogram of the pixels of `region` in `bgr` whose depth is within
+/// the band of `objectDepth` (all of them when `depth` is empty) to `h` (kPartBins values),
+/// normalised to sum to 1; false, leaving `h` zero, when fewer than 50 pixels count.
+bool addPartHistogram(const cv::Mat& bgr, cv::Rect region, const cv::Mat& depth, double objectDepth,
+                      float* h) {
+  region &= cv::Rect(0, 0, bgr.cols, bgr.rows);
+  if (region.area() < 50) return false;
   cv::Mat hsv;
-  cv::cvtColor(bgr(torso), hsv, cv::COLOR_BGR2HSV);  // H in [0, 180)
-  cv::Mat hist = cv::Mat::zeros(1, kAppearanceBins, CV_32F);
-  float* h = hist.ptr<float>();
+  cv::cvtColor(bgr(region), hsv, cv::COLOR_BGR2HSV);  // H in [0, 180)
+  int counted = 0;
   for (int y = 0; y < hsv.rows; ++y) {
     const cv::Vec3b* row = hsv.ptr<cv::Vec3b>(y);
+    const float* z = depth.empty() ? nullptr : depth.ptr<float>(region.y + y) + region.x;
     for (int x = 0; x < hsv.cols; ++x) {
+      if (z && !(std::abs(z[x] - objectDepth) < kAppearanceDepthBand)) continue;
+      ++counted;
       const int hue = row[x][0], sat = row[x][1], val = row[x][2];
       if (val < 40 || sat < 40)
         ++h[64 + std::min(3, val / 64)];
@@ -28,13 +32,44 @@ cv::Mat torsoHistogram(const cv::Mat& bgr, const cv::Rect2f& box) {
         ++h[std::min(15, hue * 16 / 180) * 4 + std::min(3, sat / 64)];
     }
   }
-  hist /= double(torso.area());
+  if (counted < 50) {
+    std::fill(h, h + kPartBins, 0.0f);
+    return false;
+  }
+  for (int i = 0; i < kPartBins; ++i) h[i] /= float(counted);
+  return true;
+}
+
+}  // namespace
+
+cv::Mat bodyHistogram(const cv::Mat& bgr, const cv::Rect2f& box, const cv::Mat& depth,
+                      double objectDepth) {
+  if (bgr.empty() || bgr.type() != CV_8UC3) return {};
+  const bool gated =
+      objectDepth > 0 && !depth.empty() && depth.type() == CV_32FC1 && depth.size() == bgr.size();
+  const cv::Mat& z = gated ? depth : cv::Mat();
+  cv::Mat hist = cv::Mat::zeros(1, kAppearanceBins, CV_32F);
+  float* h = hist.ptr<float>();
+  auto part = [&](float x0, float y0, float x1, float y1) {
+    return cv::Rect(cvRound(box.x + x0 * box.width), cvRound(box.y + y0 * box.height),
+                    cvRound((x1 - x0) * box.width), cvRound((y1 - y0) * box.height));
+  };
+  const bool upper = addPartHistogram(bgr, part(0.15f, 0.15f, 0.85f, 0.55f), z, objectDepth, h);
+  const bool lower =
+      addPartHistogram(bgr, part(0.15f, 0.55f, 0.85f, 0.95f), z, objectDepth, h + kPartBins);
+  if (!upper && !lower) return {};
+  // A part too hidden to count stands in for the other, so that two descriptors compare
+  // part by part either way.
+  if (!upper) std::copy(h + kPartBins, h + 2 * kPartBins, h);
+  if (!lower) std::copy(h, h + kPartBins, h + kPartBins);
+  hist *= 0.5;
   return hist;
 }
 
 cv::Mat observationAppearance(const core::Frame& frame, size_t detection) {
   if (detection >= frame.detections.size()) return {};
-  return torsoHistogram(frame.rgb, frame.detections[detection].box);
+  return bodyHistogram(frame.rgb, frame.detections[detection].box, frame.depth,
+                       measuredObjectDepth(frame, detection));
 }
 
 double appearanceDistance(const cv::Mat& a, const cv::Mat& b) {

@@ -33,6 +33,20 @@ void KalmanBoxTracker::predict(double t) {
 
 namespace {
 
+/// True when more than a fifth of observation j's box is covered by the box of a nearer
+/// observation: its descriptor then shows a part of the object only (the occluder's pixels are
+/// left out by the depth band, Appearance.h), and a track's descriptor is updated from whole
+/// views only.
+bool occluded(const std::vector<BoxObservation>& observations, size_t j) {
+  const BoxObservation& o = observations[j];
+  for (size_t k = 0; k < observations.size(); ++k) {
+    const BoxObservation& n = observations[k];
+    if (k == j || !(n.depth > 0 && o.depth > 0 && n.depth < o.depth)) continue;
+    if ((n.box & o.box).area() > 0.2f * o.box.area()) return true;
+  }
+  return false;
+}
+
 /// One assignment round: the tracks `trackTakes` admits that have no observation yet against the
 /// observations `observationTakes` admits that are not used yet, by the Hungarian algorithm on
 /// `gain(track, observation)` (0: the pair is refused; pairs of different categories always
@@ -92,6 +106,7 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
 
   std::vector<Tracked> kept;
   kept.reserve(tracked_.size() + observations.size());
+  std::vector<size_t> confirmed;  // indices in `kept` of the tracks confirmed by this update
   for (size_t i = 0; i < tracked_.size(); ++i) {
     Tracked& tr = tracked_[i];
     const int j = observationOf[i];
@@ -102,24 +117,42 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
       tr.filter.update(z, measurementNoise(params_.noise, z));
       if (params_.reset_at_border) restartCutComponents(tr.filter, o.box, z, image);
       tr.track.detection = j;
-      if (!o.appearance.empty())
+      if (!o.appearance.empty() && (tr.appearance.empty() || !occluded(observations, j)))
         tr.appearance = tr.appearance.empty() ? o.appearance.clone()
                                               : params_.appearance_memory * tr.appearance +
                                                     (1 - params_.appearance_memory) * o.appearance;
       ++tr.track.hits;
       tr.track.misses = 0;
+      const bool confirmedNow =
+          tr.track.state != core::TrackState::Confirmed && tr.track.hits >= params_.min_hits;
       if (tr.track.hits >= params_.min_hits) tr.track.state = core::TrackState::Confirmed;
       kept.push_back(std::move(tr));
+      if (confirmedNow) confirmed.push_back(kept.size() - 1);
       continue;
     }
     ++tr.track.misses;
     if (loseAfterMiss(tr, image)) {
       ++lost_;
+      if (remembers() && tr.track.state == core::TrackState::Confirmed && !tr.appearance.empty())
+        remembered_.push_back({tr.track.id, tr.track.category, tr.appearance, last_t_});
       continue;
     }
     kept.push_back(std::move(tr));
   }
   tracked_ = std::move(kept);
+  if (remembers()) {
+    remembered_.erase(std::remove_if(remembered_.begin(), remembered_.end(),
+                                     [&](const Remembered& r) {
+                                       return last_t_ - r.lost_at > params_.reid_memory;
+                                     }),
+                      remembered_.end());
+    std::vector<char> replaced(tracked_.size(), 0);
+    for (size_t i : confirmed) reviveIdentity(i, replaced);
+    size_t k = 0;
+    tracked_.erase(std::remove_if(tracked_.begin(), tracked_.end(),
+                                  [&](const Tracked&) { return replaced[k++] != 0; }),
+                   tracked_.end());
+  }
   for (size_t j = 0; j < observations.size(); ++j)
     if (!observationUsed[j]) startTrack(observations[j], int(j));
 }
@@ -130,7 +163,8 @@ void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observation
   assignRound(
       tracked_, observations,
       [](const Tracked& tr) {
-        return !tr.appearance.empty() && tr.track.state == core::TrackState::Confirmed;
+        return !tr.appearance.empty() && tr.track.state == core::TrackState::Confirmed &&
+               tr.track.misses > 0;
       },
       [](const BoxObservation& o) { return !o.appearance.empty(); },
       [&](const Tracked& tr, const BoxObservation& o) {
@@ -159,6 +193,36 @@ void KalmanBoxTracker::restartCutComponents(KalmanBoxFilter& filter, const cv::R
   filter.restartFrom({kS, kR}, z, P0);
   if (cutX) filter.restartFrom({kU}, z, P0);
   if (cutY) filter.restartFrom({kV}, z, P0);
+}
+
+void KalmanBoxTracker::reviveIdentity(size_t index, std::vector<char>& replaced) {
+  Tracked& t = tracked_[index];
+  if (t.appearance.empty()) return;
+  double best = params_.reid_max_distance;
+  int remembered = -1, coasting = -1;
+  for (size_t k = 0; k < remembered_.size(); ++k) {
+    if (remembered_[k].category != t.track.category) continue;
+    const double d = appearanceDistance(remembered_[k].appearance, t.appearance);
+    if (d < best) best = d, remembered = int(k);
+  }
+  for (size_t k = 0; k < tracked_.size(); ++k) {
+    const Tracked& o = tracked_[k];
+    if (k == index || replaced[k] || o.track.state != core::TrackState::Confirmed ||
+        o.track.misses == 0 || o.track.category != t.track.category || o.appearance.empty())
+      continue;
+    const double d = appearanceDistance(o.appearance, t.appearance);
+    if (d < best) best = d, coasting = int(k), remembered = -1;
+  }
+  if (coasting >= 0) {
+    t.track.id = tracked_[coasting].track.id;
+    replaced[coasting] = 1;
+  } else if (remembered >= 0) {
+    t.track.id = remembered_[remembered].id;
+    remembered_.erase(remembered_.begin() + remembered);
+  } else {
+    return;
+  }
+  ++revived_;
 }
 
 bool KalmanBoxTracker::loseAfterMiss(const Tracked& t, const cv::Size& image) const {

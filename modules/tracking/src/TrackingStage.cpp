@@ -33,6 +33,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.reid_max_distance, "reid_max_distance");
   TRACKING_READ(double, t.reid_max_shift, "reid_max_shift");
   TRACKING_READ(double, t.appearance_memory, "appearance_memory");
+  TRACKING_READ(double, t.reid_memory, "reid_memory");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -62,6 +63,8 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   TRACKING_WRITE(t.reid_max_shift, "reid_max_shift", "box heights; re-finding's reach");
   TRACKING_WRITE(t.appearance_memory, "appearance_memory",
                  "weight of a track's colour histogram against a new detection's");
+  TRACKING_WRITE(t.reid_memory, "reid_memory",
+                 "s; with reid: a new track takes a lost or coasting track's id by colour");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");

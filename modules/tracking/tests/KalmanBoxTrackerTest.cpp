@@ -1,5 +1,4 @@
-#include <dynslam/tracking/Appearance.h>
-#include <dynslam/tracking/KalmanBoxTracker.h>
+#include "TrackerTestSupport.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -9,30 +8,7 @@
 
 using namespace dynslam;
 using namespace dynslam::tracking;
-
-namespace {
-
-constexpr double kDt = 1.0 / 30;
-
-BoxObservation person(float x, float y, float w, float h, double depth) {
-  return {cv::Rect2f(x, y, w, h), depth, "person", core::MotionModel::NonRigid};
-}
-
-/// One detector frame at time k * kDt.
-std::vector<core::Track> step(KalmanBoxTracker& tracker, int k,
-                              const std::vector<BoxObservation>& observations) {
-  tracker.predict(k * kDt);
-  tracker.update(observations, cv::Size(640, 480));
-  return tracker.tracks();
-}
-
-const core::Track* findId(const std::vector<core::Track>& tracks, int id) {
-  for (const auto& t : tracks)
-    if (t.id == id) return &t;
-  return nullptr;
-}
-
-}  // namespace
+using namespace dynslam::tracking::testing;
 
 TEST(TrackingKalmanBoxTracker, TentativeThenConfirmedAfterMinHits) {
   KalmanBoxTracker tracker;  // min_hits = 3
@@ -220,56 +196,4 @@ TEST(TrackingKalmanBoxTracker, APersonCutByTheImageBorderKeepsItsId) {
   };
   EXPECT_EQ(run(true), 1u);
   EXPECT_GT(run(false), 1u);  // what the option is for (if this fails, the option may go)
-}
-
-namespace {
-
-/// A descriptor with all its weight in one colour bin.
-cv::Mat colour(int bin) {
-  cv::Mat h = cv::Mat::zeros(1, 68, CV_32F);
-  h.at<float>(bin) = 1.f;
-  return h;
-}
-
-}  // namespace
-
-// A person walking right at 300 px/s hides for 20 frames and comes back where it disappeared
-// (it turned round): the constant-velocity prediction is 200 px off, rho is 0, and the method
-// starts a new track. With reid_max_distance the coasting track re-finds it by its colours, and
-// a differently dressed person appearing at the same spot is not taken for it.
-TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPrediction) {
-  auto run = [](double reid, int reappearingColour) {
-    KalmanBoxTrackerParams params;
-    params.reid_max_distance = reid;
-    KalmanBoxTracker tracker(params);
-    int k = 0;
-    for (; k < 10; ++k) {
-      auto o = person(100 + 10.f * k, 100, 60, 180, 3.0);
-      o.appearance = colour(5);
-      step(tracker, k, {o});
-    }
-    for (; k < 30; ++k) step(tracker, k, {});
-    auto o = person(190, 100, 60, 180, 3.0);
-    o.appearance = colour(reappearingColour);
-    const auto tracks = step(tracker, k, {o});
-    for (const auto& t : tracks)
-      if (t.detection == 0) return t.id;
-    return -1;
-  };
-  EXPECT_NE(run(0.0, 5), 1) << "the method: a new track";
-  EXPECT_EQ(run(0.4, 5), 1) << "same colours: re-found";
-  EXPECT_NE(run(0.4, 40), 1) << "other colours: not taken";
-}
-
-TEST(TrackingAppearance, TorsoHistogramSeparatesColoursAndIgnoresTheLegs) {
-  cv::Mat image(200, 100, CV_8UC3, cv::Scalar(0, 0, 200));        // red everywhere
-  image(cv::Rect(0, 130, 100, 70)).setTo(cv::Scalar(200, 0, 0));  // blue legs
-  const cv::Mat red = torsoHistogram(image, cv::Rect2f(0, 0, 100, 200));
-  ASSERT_FALSE(red.empty());
-  EXPECT_NEAR(cv::sum(red)[0], 1.0, 1e-5);
-  EXPECT_NEAR(appearanceDistance(red, red), 0.0, 1e-6);
-  cv::Mat other(200, 100, CV_8UC3, cv::Scalar(0, 200, 0));  // green
-  EXPECT_GT(appearanceDistance(red, torsoHistogram(other, cv::Rect2f(0, 0, 100, 200))), 0.99);
-  EXPECT_EQ(appearanceDistance(red, cv::Mat()), 1.0);
-  EXPECT_TRUE(torsoHistogram(image, cv::Rect2f(0, 0, 4, 4)).empty()) << "too few pixels";
 }
