@@ -20,6 +20,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.speed_statistic = core::readKeyword(c, s, "speed_statistic", p.speed_statistic, kStatistics);
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
   p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
+  p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
   p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
   p.rigid.ransac.sample_size = c.read_int(s, "rigid_sample_size", p.rigid.ransac.sample_size);
@@ -47,6 +48,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
                  "median_flow: |median flow vector|; mean_norm: mean |F| (method.md's wording)");
   core::writeKey(c, s, "speed_noise_sigmas", p.speed_noise_sigmas,
         "dynamic when speed > speed_threshold + this * the speed's noise (0: the method)");
+  core::writeKey(c, s, "still_feature_speed", p.still_feature_speed,
+                 "m/s; a static feature slower than this stays static in any mask (0: off)");
   core::writeKey(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
   core::writeKey(c, s, "depth_window", p.depth_window,
@@ -88,6 +91,8 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
     fail("speed_threshold", std::to_string(p.speed_threshold), "must be >= 0");
   if (!(p.speed_noise_sigmas >= 0))
     fail("speed_noise_sigmas", std::to_string(p.speed_noise_sigmas), "must be >= 0");
+  if (!(p.still_feature_speed >= 0))
+    fail("still_feature_speed", std::to_string(p.still_feature_speed), "must be >= 0");
   if (p.speed_window < 1) fail("speed_window", std::to_string(p.speed_window), "must be >= 1");
   if (p.min_flow_features < 1)
     fail("min_flow_features", std::to_string(p.min_flow_features), "must be >= 1");

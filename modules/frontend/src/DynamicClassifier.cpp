@@ -85,6 +85,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     bool has_point = false;
     Eigen::Vector3d P;
     const Observation* previous = nullptr;  ///< the feature's point in the previous frame
+    double speed = -1;  ///< |scene flow| / time over the window, m/s; < 0: not measured
   };
   std::vector<Current> cur(frame.features.size());
   std::vector<Eigen::Vector3d> bgPrev, bgCur;
@@ -169,6 +170,7 @@ void DynamicClassifier::process(core::Frame& frame) {
       if (o.frame + window < now || o.frame >= now || !(frame.t > o.t)) continue;
       const Eigen::Vector3d F = sceneFlow(o.P, c.P, cameraFromPast(o.frame));
       velocities[c.region->object_id].push_back(F / (frame.t - o.t));
+      cur[i].speed = F.norm() / (frame.t - o.t);
       // Variance of that velocity from the depth noise of both points (the window median
       // divides a reading's sigma by about sqrt(0.64 w^2)).
       const double reduce = 0.8 * std::max(1, params_.depth_window);
@@ -244,10 +246,17 @@ void DynamicClassifier::process(core::Frame& frame) {
   }
 
   // 5. Classes.
+  std::unordered_set<std::int64_t> nextStatic;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
     const auto* region = cur[i].region;
-    if (!region || !dynamic[region->object_id]) continue;  // Static
+    const bool stillAndWasStatic = cur[i].speed >= 0 &&
+                                   cur[i].speed < params_.still_feature_speed &&
+                                   wasStatic_.count(f.id) > 0;
+    if (!region || !dynamic[region->object_id] || stillAndWasStatic) {
+      nextStatic.insert(f.id);
+      continue;  // Static
+    }
     const bool member = members[region->object_id].count(f.id) > 0;
     if (region->model == core::MotionModel::Rigid) {
       const bool rejected = tested[region->object_id].count(f.id) > 0 && !member;
@@ -271,6 +280,7 @@ void DynamicClassifier::process(core::Frame& frame) {
   }
   history_ = std::move(next);
   objectOf_ = std::move(nextObjectOf);
+  wasStatic_ = std::move(nextStatic);
   prevT_ = frame.t;
   prevPose_ = frame.T_world_camera;
   ++frame_;

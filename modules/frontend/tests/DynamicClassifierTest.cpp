@@ -196,6 +196,55 @@ TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoas
   EXPECT_EQ(walker, 25);
 }
 
+// The walker's mask grows over the left half of the standing person (a mask holds every pixel of
+// its box within its depth range; here the standing person's own detection is missed too): by
+// the object's class the standing person's features there turn dynamic; with
+// still_feature_speed they stay Static, as they did not move, while the walker's own features
+// stay dynamic.
+TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
+  auto run = [](double stillSpeed) {
+    const Scene scene;
+    DynamicClassifierParams params;
+    params.still_feature_speed = stillSpeed;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    for (int k = 0; k < 15; ++k) {
+      f = scene.frame(k);
+      if (k >= 12) {
+        // The walker's pixels and those of the standing person's left half, not the wall
+        // between them.
+        const cv::Rect walker = f.object_masks[0].roi;
+        cv::Rect half = f.object_masks[1].roi;
+        half.width /= 2;
+        const cv::Rect roi = walker | half;
+        cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
+        mask(walker - roi.tl()).setTo(255);
+        mask(half - roi.tl()).setTo(255);
+        f.object_masks[0].roi = roi;
+        f.object_masks[0].mask = mask;
+        f.object_masks.erase(f.object_masks.begin() + 1);
+      }
+      classifier.process(f);
+    }
+    int onWalker = 0, staticOnWalker = 0, walkerDynamic = 0;
+    for (const auto& feat : f.features) {
+      if (feat.id >= 2000 && feat.id < 3000 && feat.object_id == 1) {
+        ++onWalker;
+        staticOnWalker += feat.feature_class == core::FeatureClass::Static;
+      }
+      if (feat.id >= 1000 && feat.id < 2000)
+        walkerDynamic += feat.feature_class != core::FeatureClass::Static;
+    }
+    EXPECT_GE(onWalker, 5) << "the walker's mask holds some of them";
+    EXPECT_EQ(walkerDynamic, 25);
+    return std::make_pair(staticOnWalker, onWalker);
+  };
+  const auto method = run(0.0);
+  EXPECT_EQ(method.first, 0) << "by the object's class: dynamic";
+  const auto still = run(0.2);
+  EXPECT_EQ(still.first, still.second) << "still: Static";
+}
+
 TEST(DynamicClassifier, TheMethodsFrameToFrameSettingsAgreeOnCleanData) {
   const Scene scene;
   DynamicClassifierParams params;
