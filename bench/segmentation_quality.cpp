@@ -59,7 +59,38 @@ struct Scores {
   std::vector<double> depthErr[3], torsoErr[3];          // |d_t - truth| / truth, %
   std::vector<double> ms, objects;                       // per frame
   size_t invalid = 0, people = 0, outOfRange = 0;
+  // Pixels of the scored people (>= 50 % visible): visible, and where the missed ones went;
+  // mask pixels that are not the person's.
+  size_t visible = 0, missedNoDepth = 0, missedOutsideRange = 0, missedToOther = 0;
+  size_t maskOther = 0, maskBackground = 0, maskObject = 0;
 };
+
+/// Adds to `s` where person `id`'s visible pixels went that mask `m` missed (no depth, depth
+/// outside [t_min, t_max], or in range but given to another object by the mutual-occlusion
+/// step) and what `m` holds that is not the person (background, another object).
+void tallyPixels(const cv::Mat& label, const cv::Mat& depth, uint16_t id, const core::ObjectMask& m,
+                 Scores& s) {
+  for (int y = 0; y < label.rows; ++y)
+    for (int x = 0; x < label.cols; ++x) {
+      const uint16_t l = label.at<uint16_t>(y, x);
+      const bool inMask =
+          m.valid && m.roi.contains({x, y}) && m.mask.at<uint8_t>(y - m.roi.y, x - m.roi.x) != 0;
+      if (l == id) {
+        ++s.visible;
+        if (inMask) continue;
+        const float z = depth.at<float>(y, x);
+        if (!(z > 0))
+          ++s.missedNoDepth;
+        else if (z < m.t_min || z > m.t_max)
+          ++s.missedOutsideRange;
+        else
+          ++s.missedToOther;
+      } else if (inMask) {
+        ++(l == 0 ? s.maskBackground : s.maskOther);
+      }
+    }
+  s.maskObject += m.valid ? cv::countNonZero(m.mask) : 0;
+}
 
 void printTable(const Scores& s) {
   const double iou = mean(s.iou);
@@ -73,6 +104,13 @@ void printTable(const Scores& s) {
   std::printf("    where d_t is within 5 %% of the truth (%zu of %zu): mean IoU %.3f\n",
               s.iouRightDepth.size(), s.iou.size(), mean(s.iouRightDepth));
   std::printf("    each box alone (no mutual-occlusion step): mean IoU %.3f\n", mean(s.iouAlone));
+  const double v = std::max<size_t>(1, s.visible), a = std::max<size_t>(1, s.maskObject);
+  std::printf(
+      "    their visible pixels missed: %.1f %% outside [T_min, T_max], %.1f %% in range but "
+      "given to another object, %.1f %% without depth; mask pixels not theirs: %.1f %% "
+      "background, %.1f %% another object\n",
+      100 * s.missedOutsideRange / v, 100 * s.missedToOther / v, 100 * s.missedNoDepth / v,
+      100 * s.maskBackground / a, 100 * s.maskOther / a);
   std::printf(
       "  d_t error, %% of the true depth       mean  median  <=5%%  behind  in front  "
       "vs torso z  target\n");
@@ -164,6 +202,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
         s.boxIoU.push_back(double(o.visible_pixels) / std::max(1, m.roi.area()));
         s.iouAlone.push_back(
             segmentation::maskIoU(segmenter.segmentOne(f.image.depth, detections[k], k), truth));
+        tallyPixels(f.image.label, f.image.depth, uint16_t(o.id), m, s);
       }
       if (!m.valid) continue;
       const double torsoZ = (T_camera_world * o.T_world_object).translation().z();

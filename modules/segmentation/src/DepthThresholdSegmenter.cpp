@@ -178,6 +178,8 @@ void DepthThresholdSegmenter::resolveOverlaps(std::vector<core::ObjectMask>& mas
                                               const cv::Mat& depth) const {
   if (params_.overlap_rule == OverlapRule::ClosestDepth)
     resolveByClosestDepth(masks, depth);
+  else if (params_.overlap_rule == OverlapRule::Connected)
+    resolveByConnectivity(masks, depth);
   else
     resolveMutualOcclusion(masks);
 }

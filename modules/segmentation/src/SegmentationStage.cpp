@@ -12,7 +12,9 @@ constexpr core::Keyword<ObjectCluster> kClusters[] = {
     {"larger", ObjectCluster::Larger},
     {"occluder_aware", ObjectCluster::OccluderAware}};
 constexpr core::Keyword<OverlapRule> kOverlapRules[] = {
-    {"nearer", OverlapRule::Nearer}, {"closest_depth", OverlapRule::ClosestDepth}};
+    {"nearer", OverlapRule::Nearer},
+    {"closest_depth", OverlapRule::ClosestDepth},
+    {"connected", OverlapRule::Connected}};
 constexpr core::Keyword<SegmentedBoxes> kBoxes[] = {
     {"detections", SegmentedBoxes::Detections},
     {"predicted_tracks", SegmentedBoxes::PredictedTracks}};
@@ -53,7 +55,8 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(
       c, s, "overlap_rule", std::string(core::wordOf(p.overlap_rule, kOverlapRules)),
       "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
-      "the object whose d_t is closest to the pixel's depth (not the method)");
+      "the object whose d_t is closest to the pixel's depth; connected = the object whose "
+      "depth-continuous surface reaches it (both not the method)");
   core::writeKey(
       c, s, "boxes", std::string(core::wordOf(boxes, kBoxes)),
       "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "

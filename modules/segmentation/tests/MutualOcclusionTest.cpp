@@ -132,3 +132,36 @@ TEST(SegmentationMutualOcclusion, ClosestDepthKeepsAPersonJustBehindAnother) {
     EXPECT_FALSE(owns(masks[1], 130, 100));
   }
 }
+
+// The far person turns away from the camera: its body slants from 2.12 m at its left edge, in
+// the overlap, to 2.9 m. Its pixels there are nearer the near person's d_t than its own, so
+// closest_depth gives them to the near person; overlap_rule connected follows the far
+// person's surface from its own pixels into the overlap, and stops at the 0.12 m step to the
+// near person.
+TEST(SegmentationMutualOcclusion, ConnectedFollowsEachSurfaceIntoTheOverlap) {
+  cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(6.0f));  // wall
+  depth(cv::Rect(60, 40, 100, 180)).setTo(2.0f);        // near person
+  for (int x = 160; x < 260; ++x)                       // far person, slanted
+    depth(cv::Rect(x, 40, 1, 180)).setTo(2.12f + 0.0078f * (x - 160));
+  const std::vector<core::Detection> boxes = {person({50, 30, 120, 200}),
+                                              person({120, 30, 150, 200})};
+  for (auto rule :
+       {segmentation::OverlapRule::ClosestDepth, segmentation::OverlapRule::Connected}) {
+    segmentation::DepthThresholdParams p;
+    p.overlap_rule = rule;
+    const auto masks = DepthThresholdSegmenter(p).segment(depth, boxes);
+    ASSERT_TRUE(masks[0].valid && masks[1].valid);
+    ASSERT_TRUE(inRange(masks[0], depth.at<float>(100, 162)) &&
+                inRange(masks[1], depth.at<float>(100, 162)))
+        << "the case this test is about";
+    ASSERT_LT(std::abs(depth.at<float>(100, 162) - masks[0].d_t),
+              std::abs(depth.at<float>(100, 162) - masks[1].d_t));
+    const bool connected = rule == segmentation::OverlapRule::Connected;
+    for (int x = 160; x < 170; ++x) {
+      EXPECT_EQ(owns(masks[1], x, 100), connected) << "far person's pixel x = " << x;
+      EXPECT_EQ(owns(masks[0], x, 100), !connected) << "x = " << x;
+    }
+    EXPECT_TRUE(owns(masks[0], 130, 100)) << "near person's pixel in the overlap stays its own";
+    EXPECT_FALSE(owns(masks[1], 130, 100));
+  }
+}

@@ -34,7 +34,16 @@ enum class OverlapRule {
   /// tie). With e = 0.5 m the near person's range [T_min, T_max] often holds a person walking
   /// less than e behind; "nearer" then gives the near person all of the other's pixels in
   /// the overlap. indoor_people_high (occluder_aware): mask IoU 0.703 -> 0.734.
-  ClosestDepth
+  ClosestDepth,
+  /// NOT the method: a shared pixel goes to the object whose surface reaches it, searching
+  /// breadth-first from each mask's own pixels across neighbours less than 5 cm apart in depth
+  /// (resolveByConnectivity); pixels no surface reaches fall back to closest_depth. A person's
+  /// body slants and bends (turned shoulders, swinging arms, a leg stepping back), so its
+  /// pixels are often nearer another person's d_t than its own; a surface is continuous where
+  /// two people are not. indoor_people_high (occluder_aware): mask IoU 0.734 -> 0.808, the
+  /// pixels lost to another object 22 % -> 10 % of the visible ones; ~1.5 ms per frame
+  /// against 0.4 for closest_depth (bench-segmentation).
+  Connected
 };
 
 /// The method's parameters (defaults: method.md section 1). Read from the ini by
@@ -96,6 +105,10 @@ void resolveMutualOcclusion(std::vector<core::ObjectMask>& masks);
 /// Step 9 with OverlapRule::ClosestDepth: a pixel set in several valid masks stays only in the
 /// one whose d_t is closest to its depth in `depth` (the smaller d_t on a tie).
 void resolveByClosestDepth(std::vector<core::ObjectMask>& masks, const cv::Mat& depth);
+
+/// Step 9 with OverlapRule::Connected (see there): only the overlaps' bounding rectangle is
+/// searched; masks past the 64th keep their pixels.
+void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& depth);
 
 /// The detection box in whole pixels (edges rounded), clipped to an image of `size`.
 cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size);
