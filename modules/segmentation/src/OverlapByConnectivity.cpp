@@ -26,61 +26,72 @@ void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& 
   if (area.empty()) return;
   area = cv::Rect(area.x - 1, area.y - 1, area.width + 2, area.height + 2) &
          cv::Rect(0, 0, depth.cols, depth.rows);
-  const int W = area.width;
-  const size_t N = size_t(area.width) * area.height;
+  // The grids below have one more pixel on every side that no mask holds, so that the search
+  // needs no bounds checks: pixel (x, y) of `area` is index (y + 1) * W + x + 1.
+  const int W = area.width + 2, H = area.height + 2;
+  const size_t N = size_t(W) * H;
+  auto index = [&](int x, int y) { return size_t(y - area.y + 1) * W + (x - area.x + 1); };
   std::vector<std::uint64_t> holders(N, 0);  // bit k: masks[k] holds the pixel
+  std::vector<float> z(N, 0.f);
+  for (int y = area.y; y < area.br().y; ++y) {
+    const float* row = depth.ptr<float>(y);
+    std::copy(row + area.x, row + area.br().x, z.begin() + index(area.x, y));
+  }
   for (size_t k = 0; k < n; ++k) {
     if (!usable(k)) continue;
     const cv::Rect r = masks[k].roi & area;
-    for (int y = r.y; y < r.y + r.height; ++y) {
+    for (int y = r.y; y < r.br().y; ++y) {
       const uint8_t* row = masks[k].mask.ptr<uint8_t>(y - masks[k].roi.y) - masks[k].roi.x;
-      for (int x = r.x; x < r.x + r.width; ++x)
-        if (row[x]) holders[size_t(y - area.y) * W + (x - area.x)] |= std::uint64_t(1) << k;
+      std::uint64_t* h = holders.data() + index(area.x, y) - area.x;  // h[x]: pixel (x, y)
+      for (int x = r.x; x < r.br().x; ++x)
+        if (row[x]) h[x] |= std::uint64_t(1) << k;
     }
   }
   // owner: the mask whose surface reached the pixel (its only holder for pixels one mask
   // holds); -1: shared and not reached yet; -2: no mask holds it.
   std::vector<int8_t> owner(N, -2);
-  std::vector<int> queue;
   for (size_t p = 0; p < N; ++p) {
     const std::uint64_t h = holders[p];
-    if (!h) continue;
-    owner[p] = (h & (h - 1)) == 0 ? int8_t(__builtin_ctzll(h)) : int8_t(-1);
-    if (owner[p] >= 0) queue.push_back(int(p));
+    if (h) owner[p] = (h & (h - 1)) == 0 ? int8_t(__builtin_ctzll(h)) : int8_t(-1);
   }
-  // Breadth-first from every mask's own pixels into the shared ones, across neighbours one
-  // surface step apart: a shared pixel goes to the object whose surface reaches it first.
-  auto z = [&](int p) { return depth.at<float>(area.y + p / W, area.x + p % W); };
+  // Breadth-first from every mask's own pixels beside shared ones into the shared ones, across
+  // neighbours one surface step apart: a shared pixel goes to the object whose surface reaches
+  // it first.
+  const std::ptrdiff_t step[4] = {-1, 1, -std::ptrdiff_t(W), std::ptrdiff_t(W)};
+  std::vector<size_t> queue;
+  for (size_t p = size_t(W); p + W < N; ++p)
+    if (owner[p] >= 0 &&
+        (owner[p - 1] == -1 || owner[p + 1] == -1 || owner[p - W] == -1 || owner[p + W] == -1))
+      queue.push_back(p);
   for (size_t head = 0; head < queue.size(); ++head) {
-    const int p = queue[head];
-    const int x = p % W, y = p / W, k = owner[p];
-    const float zp = z(p);
-    const int neighbours[4] = {x > 0 ? p - 1 : -1, x + 1 < W ? p + 1 : -1, y > 0 ? p - W : -1,
-                               y + 1 < area.height ? p + W : -1};
-    for (int q : neighbours) {
-      if (q < 0 || owner[q] != -1 || !(holders[q] >> k & 1)) continue;
-      if (!(std::abs(z(q) - zp) < kSurfaceStep)) continue;
+    const size_t p = queue[head];
+    const int k = owner[p];
+    for (std::ptrdiff_t d : step) {
+      const size_t q = p + d;
+      if (owner[q] != -1 || !(holders[q] >> k & 1) || !(std::abs(z[q] - z[p]) < kSurfaceStep))
+        continue;
       owner[q] = int8_t(k);
       queue.push_back(q);
     }
   }
-  for (size_t p = 0; p < N; ++p) {
-    const std::uint64_t h = holders[p];
-    if (!h || (h & (h - 1)) == 0) continue;
-    int keep = owner[p];
-    if (keep < 0) {  // no surface reached it: the object whose d_t is closest to its depth
-      double best = 1e300;
-      for (size_t k = 0; k < n; ++k) {
-        if (!(h >> k & 1)) continue;
-        const double d = std::abs(z(int(p)) - masks[k].d_t);
-        if (d < best || (d == best && masks[k].d_t < masks[keep].d_t)) best = d, keep = int(k);
+  for (int y = area.y; y < area.br().y; ++y)
+    for (int x = area.x; x < area.br().x; ++x) {
+      const size_t p = index(x, y);
+      const std::uint64_t h = holders[p];
+      if ((h & (h - 1)) == 0) continue;  // held by one mask or none
+      int keep = owner[p];
+      if (keep < 0) {  // no surface reached it: the object whose d_t is closest to its depth
+        double best = 1e300;
+        for (size_t k = 0; k < n; ++k) {
+          if (!(h >> k & 1)) continue;
+          const double d = std::abs(z[p] - masks[k].d_t);
+          if (d < best || (d == best && masks[k].d_t < masks[keep].d_t)) best = d, keep = int(k);
+        }
       }
+      for (size_t k = 0; k < n; ++k)
+        if ((h >> k & 1) && int(k) != keep)
+          masks[k].mask.at<uint8_t>(y - masks[k].roi.y, x - masks[k].roi.x) = 0;
     }
-    const int x = area.x + int(p) % W, y = area.y + int(p) / W;
-    for (size_t k = 0; k < n; ++k)
-      if ((h >> k & 1) && int(k) != keep)
-        masks[k].mask.at<uint8_t>(y - masks[k].roi.y, x - masks[k].roi.x) = 0;
-  }
 }
 
 }  // namespace dynslam::segmentation
