@@ -111,7 +111,8 @@ segmentation() {
   # The segmentation settings of params/sim_vio.ini (what the SLAM tables run).
   # shellcheck disable=SC2046
   "$BIN/bench-segmentation" --config "$ROOT/params/sim/$sc.ini" --every 3 $(simSettings "$seed" "$sc") \
-    --seg-set Segmentation.object_cluster=occluder_aware > "$f" 2>&1 || echo "FAILED" >> "$f"
+    --seg-set Segmentation.object_cluster=occluder_aware --seg-set Segmentation.overlap_rule=connected \
+    > "$f" 2>&1 || echo "FAILED" >> "$f"
 }
 
 detector() {
@@ -136,7 +137,7 @@ yoloxIni() {
   awk '/^\[/ { skip = ($0 == "[Detection]") } !skip' "$ROOT/params/sim_vio.ini"
   printf '\n[Detection]\ndetector = onnx_yolo\nmode = realtime\nmodel = %s\nlayout = yolox\ninput_size = 416\n' \
     "$SHARED/models/yolox_nano.onnx"
-  printf '\n[PredictedBoxes]\nboxes = predicted_tracks\nobject_cluster = occluder_aware\n'
+  printf '\n[PredictedBoxes]\nboxes = predicted_tracks\nobject_cluster = occluder_aware\noverlap_rule = connected\n'
 }
 
 timing() {

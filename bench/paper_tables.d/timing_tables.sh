@@ -41,7 +41,7 @@ table1() {
   echo "Detector: \`bench-detection\` on 30 colour frames spread over the scenario (seed $FIRST_SEED), median"
   echo "latency and people found per frame, against the true people per frame (all that project / at"
   echo "least half visible). Segmentation: \`bench-segmentation --every 3\` with the ground-truth"
-  echo "boxes (\`object_cluster = occluder_aware\`), every seed: median time per frame (median over the"
+  echo "boxes (\`object_cluster = occluder_aware\`, \`overlap_rule = connected\`), every seed: median time per frame (median over the"
   echo "seeds), mask IoU against the simulator's instance labels for people >= 50 % visible, precision"
   echo "and recall (means over the seeds). Paper (R7-5800H + RTX 3060): YOLO 18-20 ms, segmentation"
   echo "0.7-1.6 ms, against Mask R-CNN 86-95 ms."
