@@ -132,12 +132,11 @@ void EstimatorStage::process(core::Frame& frame) {
     // step at frame 3 became 4.5 m/s, every PnP pose after it was refused as too far from the
     // prediction and the window restarted 160 times), while the PnP pose against the window's
     // own map stays right.
-    const bool plausible =
-        tracked && (plausibleStep(predicted.inverse() * tracked->T_world_camera * T_ic.inverse()) ||
-                    (last_body_ && plausibleStep(last_body_->inverse() * tracked->T_world_camera *
-                                                 T_ic.inverse())));
-    if (plausible)
-      T_wb = tracked->T_world_camera * T_ic.inverse();
+    const std::optional<Eigen::Isometry3d> trackedBody =
+        tracked ? std::optional(tracked->T_world_camera * T_ic.inverse()) : std::nullopt;
+    if (trackedBody && (plausibleStep(predicted.inverse() * *trackedBody) ||
+                        (last_body_ && plausibleStep(last_body_->inverse() * *trackedBody))))
+      T_wb = *trackedBody;
     else
       ++pnp_failures_;
   }

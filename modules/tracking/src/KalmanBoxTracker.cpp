@@ -146,12 +146,11 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
                                        return last_t_ - r.lost_at > params_.reid_memory;
                                      }),
                       remembered_.end());
-    std::vector<char> replaced(tracked_.size(), 0);
-    for (size_t i : confirmed) reviveIdentity(i, replaced);
-    size_t k = 0;
-    tracked_.erase(std::remove_if(tracked_.begin(), tracked_.end(),
-                                  [&](const Tracked&) { return replaced[k++] != 0; }),
-                   tracked_.end());
+    for (size_t i : confirmed) reviveIdentity(i);
+    tracked_.erase(
+        std::remove_if(tracked_.begin(), tracked_.end(),
+                       [](const Tracked& t) { return t.track.state == core::TrackState::Lost; }),
+        tracked_.end());
   }
   for (size_t j = 0; j < observations.size(); ++j)
     if (!observationUsed[j]) startTrack(observations[j], int(j));
@@ -195,7 +194,7 @@ void KalmanBoxTracker::restartCutComponents(KalmanBoxFilter& filter, const cv::R
   if (cutY) filter.restartFrom({kV}, z, P0);
 }
 
-void KalmanBoxTracker::reviveIdentity(size_t index, std::vector<char>& replaced) {
+void KalmanBoxTracker::reviveIdentity(size_t index) {
   Tracked& t = tracked_[index];
   if (t.appearance.empty()) return;
   double best = params_.reid_max_distance;
@@ -207,15 +206,15 @@ void KalmanBoxTracker::reviveIdentity(size_t index, std::vector<char>& replaced)
   }
   for (size_t k = 0; k < tracked_.size(); ++k) {
     const Tracked& o = tracked_[k];
-    if (k == index || replaced[k] || o.track.state != core::TrackState::Confirmed ||
-        o.track.misses == 0 || o.track.category != t.track.category || o.appearance.empty())
+    if (k == index || o.track.state != core::TrackState::Confirmed || o.track.misses == 0 ||
+        o.track.category != t.track.category || o.appearance.empty())
       continue;
     const double d = appearanceDistance(o.appearance, t.appearance);
     if (d < best) best = d, coasting = int(k), remembered = -1;
   }
   if (coasting >= 0) {
     t.track.id = tracked_[coasting].track.id;
-    replaced[coasting] = 1;
+    tracked_[coasting].track.state = core::TrackState::Lost;  // removed by update()
   } else if (remembered >= 0) {
     t.track.id = remembered_[remembered].id;
     remembered_.erase(remembered_.begin() + remembered);

@@ -134,8 +134,8 @@ class KalmanBoxTracker {
                             const cv::Size& image) const;
   /// reid_memory: tracked_[index] (just confirmed) takes the id of the remembered or coasting
   /// track of closest appearance, when close enough; that one is forgotten (a coasting one is
-  /// marked in `replaced`, to be removed by the caller).
-  void reviveIdentity(size_t index, std::vector<char>& replaced);
+  /// marked Lost, to be removed by the caller).
+  void reviveIdentity(size_t index);
   bool remembers() const { return params_.reid_memory > 0 && params_.reid_max_distance > 0; }
   /// True when the unmatched track `t` is to be dropped now.
   bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
