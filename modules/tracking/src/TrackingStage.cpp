@@ -92,6 +92,9 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
   if (t.max_age < 0)
     throw core::ConfigError("[" + section + "] max_age = " + std::to_string(t.max_age) + " in " +
                             cfg.source() + ": must be >= 0");
+  if (!(t.reid_memory >= 0))
+    throw core::ConfigError("[" + section + "] reid_memory = " + std::to_string(t.reid_memory) +
+                            " in " + cfg.source() + ": must be >= 0 (s; 0: no memory)");
   if (t.min_hits < 1)
     throw core::ConfigError("[" + section + "] min_hits = " + std::to_string(t.min_hits) + " in " +
                             cfg.source() + ": must be >= 1");

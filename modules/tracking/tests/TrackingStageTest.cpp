@@ -77,6 +77,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nmin_hits = 0\n").find("min_hits"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nratio_walk = 0\n").find("ratio_walk"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nreid_memory = -1\n").find("reid_memory"), std::string::npos);
   EXPECT_EQ(errorOf("[Tracking]\n"), "");
 }
 
