@@ -6,8 +6,7 @@
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
 #include <dynslam/core/ProgressReporter.h>
-#include <dynslam/sim/Augmenter.h>
-#include <dynslam/sim/Simulator.h>
+#include <dynslam/sim/MakeSequence.h>
 
 #include <unistd.h>
 #include <cmath>
@@ -31,12 +30,6 @@ dropped from START seconds on, all-black colour images, all-invalid depth), the 
 unchanged: robustness tests.
 --contact-sheet also writes a PNG of N frames (default 4) as colour | depth | labels.
 )";
-/// The sequence [Scenario] scene asks for: fully synthetic, or a real one with movers inserted.
-std::unique_ptr<dynslam::sim::Sequence> makeSequence(const dynslam::sim::ScenarioOptions& o) {
-  if (o.world.scene == "augment") return std::make_unique<dynslam::sim::Augmenter>(o);
-  return std::make_unique<dynslam::sim::Simulator>(o);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,7 +46,7 @@ int main(int argc, char** argv) {
     const auto cfg = core::IniConfig::fromFile(cl.required("--config"), cl.all("--set"));
     sim::ScenarioOptions options;
     options.load(cfg);
-    const std::unique_ptr<sim::Sequence> sequence = makeSequence(options);
+    const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
     const sim::Sequence& simulator = *sequence;
     rawlog_tools::SensorFaults faults;
     const auto pair = [&](const char* flag, auto& first, auto& second) {
