@@ -221,8 +221,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   }
   std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes\n", ini.c_str(),
               sequence->camera().width, sequence->camera().height, s.ms.size(),
-              sequence->frameCount(), every,
-              visibleBoxes ? "visible" : "amodal");
+              sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal");
   printTable(s);
   std::printf("\n");
 }

@@ -33,9 +33,9 @@ TEST(MakeSequence, SyntheticScenesGetTheSimulator) {
 TEST(MakeSequence, AugmentSceneGetsTheAugmenterWithLabelsInsideTheBoxes) {
   DYNSLAM_REQUIRE_SHARED(scenes, "data/7scenes");
   const std::string rawlog = dynslam::testing::scratchDir() + "/7scenes.rawlog";
-  const auto conversion = dynslam::testing::runCommand(
-      dynslam::testing::binDir() + "/sevenscenes2rawlog --in '" + scenes + "' --out '" + rawlog +
-      "' --first 90 --last 150");
+  const auto conversion =
+      dynslam::testing::runCommand(dynslam::testing::binDir() + "/sevenscenes2rawlog --in '" +
+                                   scenes + "' --out '" + rawlog + "' --first 90 --last 150");
   ASSERT_EQ(conversion.exit_code, 0) << conversion.output;
   ScenarioOptions o;
   o.load(core::IniConfig::fromText(
