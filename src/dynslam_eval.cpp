@@ -1,5 +1,6 @@
 // dynslam-eval: APE / RPE of an estimated trajectory against a reference, with the definitions
-// of evo (github.com/MichaelGrupp/evo) so that figures can be compared with published ones.
+// of evo (github.com/MichaelGrupp/evo) so that figures can be compared with published ones;
+// `bars` draws a table of such figures (e.g. per scenario and variant) as a bar chart.
 // Exit codes: 0 success, 1 bad data (unreadable file, nothing to associate, ...), 2 usage.
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/JsonWriter.h>
@@ -29,6 +30,7 @@ namespace ev = dynslam::evaluation;
 const char* const kUsage = R"(usage:
   dynslam-eval ape REF EST [options]
   dynslam-eval rpe REF EST [options] [--delta N] [--delta-unit f|m] [--all-pairs] [--delta-tol X]
+  dynslam-eval bars TABLE.tsv OUT.png [--title T] [--value-label L]
 
 Computes evo's absolute (ape) or relative (rpe) pose error of the estimate EST against the
 reference REF and prints the pairs, the alignment and rmse, mean, median, std, min, max, sse.
@@ -52,6 +54,10 @@ rpe options:
   --all-pairs                use every pair at distance N, not only consecutive ones
   --delta-tol X              relative tolerance of --all-pairs with metres (default 0.1)
   --pairs-from-reference     choose the pairs on REF's path (default: on EST's, as evo does)
+
+bars draws a grouped bar chart of TABLE.tsv (tab-separated; '#' lines are comments): a header
+row "GROUP-AXIS<TAB>SERIES1<TAB>SERIES2...", then one row per group, "GROUP<TAB>VALUE...";
+a value "-" or empty draws no bar.
 
 Poses are associated by timestamp (tum, euroc) like evo, or by index when a file is kitti
 (the files must then hold as many poses).
@@ -84,6 +90,13 @@ void parseChoice(const dynslam::core::CommandLine& cl, const std::string& flag, 
   }
 }
 
+/// The flags of ape and rpe (none applies to bars).
+const char* const kTrajectoryFlags[] = {
+    "--format",    "--ref-format", "--est-format",   "--align",     "--t-max-diff",
+    "--t-offset",  "--pose-relation", "--json",      "--plot",      "--plot-plane",
+    "--delta",     "--delta-unit", "--delta-tol",    "--align-origin", "--all-pairs",
+    "--pairs-from-reference"};
+
 Options parseArguments(const dynslam::core::CommandLine& cl) {
   Options o;
   const auto& positional = cl.positional();
@@ -92,7 +105,9 @@ Options parseArguments(const dynslam::core::CommandLine& cl) {
                      std::to_string(positional.size()) + " arguments");
   o.command = positional[0];
   if (o.command != "ape" && o.command != "rpe")
-    throw UsageError("unknown command '" + o.command + "' (expected ape or rpe)");
+    throw UsageError("unknown command '" + o.command + "' (expected ape, rpe or bars)");
+  for (const char* flag : {"--title", "--value-label"})
+    if (cl.has(flag)) throw UsageError(std::string("flag ") + flag + " only applies to bars");
   o.ref_path = positional[1];
   o.est_path = positional[2];
 
@@ -127,6 +142,53 @@ Options parseArguments(const dynslam::core::CommandLine& cl) {
     throw UsageError("flag --delta must be a whole number of frames with --delta-unit f");
   if (o.rpe.rel_delta_tol < 0.0) throw UsageError("flag --delta-tol must be >= 0");
   return o;
+}
+
+/// The table of `dynslam-eval bars` (see kUsage); throws EvaluationError naming the file and
+/// line of a row with the wrong number of cells or a value that is not a number.
+ev::BarChartInput readBarTable(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ev::EvaluationError("cannot read bar table '" + path + "'");
+  ev::BarChartInput chart;
+  std::string line;
+  bool header = true;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    for (std::size_t tab; (tab = line.find('\t', start)) != std::string::npos; start = tab + 1)
+      cells.push_back(line.substr(start, tab - start));
+    cells.push_back(line.substr(start));
+    const std::string where = path + ":" + std::to_string(number);
+    if (header) {
+      if (cells.size() < 2) throw ev::EvaluationError(where + ": the header names no series");
+      chart.series.assign(cells.begin() + 1, cells.end());
+      header = false;
+      continue;
+    }
+    if (cells.size() != chart.series.size() + 1)
+      throw ev::EvaluationError(where + ": " + std::to_string(cells.size()) + " cells, expected " +
+                                std::to_string(chart.series.size() + 1));
+    chart.groups.push_back(cells[0]);
+    auto& row = chart.values.emplace_back();
+    for (std::size_t k = 1; k < cells.size(); ++k) {
+      if (cells[k].empty() || cells[k] == "-") {
+        row.push_back(std::nan(""));
+        continue;
+      }
+      std::size_t used = 0;
+      double v = 0;
+      try {
+        v = std::stod(cells[k], &used);
+      } catch (const std::exception&) {
+      }
+      if (used != cells[k].size())
+        throw ev::EvaluationError(where + ": '" + cells[k] + "' is not a number");
+      row.push_back(v);
+    }
+  }
+  if (chart.groups.empty()) throw ev::EvaluationError("bar table '" + path + "' has no row");
+  return chart;
 }
 
 /// Shortest text that reads back as the same double (what Python prints).
@@ -177,6 +239,23 @@ void writeJson(const std::string& path, const ev::ErrorStatistics& s) {
       .endObject();
   out.flush();
   if (!out) throw ev::EvaluationError("error while writing JSON file '" + path + "'");
+}
+
+/// dynslam-eval bars TABLE.tsv OUT.png: the table as a grouped bar chart.
+int runBars(const dynslam::core::CommandLine& cl) {
+  const auto& positional = cl.positional();
+  if (positional.size() != 3)
+    throw UsageError("expected bars TABLE.tsv OUT.png, got " + std::to_string(positional.size()) +
+                     " arguments");
+  for (const char* flag : kTrajectoryFlags)
+    if (cl.has(flag)) throw UsageError(std::string("flag ") + flag + " only applies to ape and rpe");
+  ev::BarChartInput chart = readBarTable(positional[1]);
+  chart.title = cl.valueOr("--title", "");
+  chart.value_label = cl.valueOr("--value-label", "");
+  ev::writeBarChartPng(positional[2], chart);
+  std::cout << "bars        " << chart.groups.size() << " groups x " << chart.series.size()
+            << " series -> " << positional[2] << '\n';
+  return 0;
 }
 
 int run(const Options& o) {
@@ -255,13 +334,14 @@ int main(int argc, char** argv) {
     dynslam::core::CommandLine cl(
         {"--format", "--ref-format", "--est-format", "--align", "--t-max-diff", "--t-offset",
          "--pose-relation", "--json", "--plot", "--plot-plane", "--delta", "--delta-unit",
-         "--delta-tol"},
+         "--delta-tol", "--title", "--value-label"},
         {"--align-origin", "--all-pairs", "--pairs-from-reference"}, {}, 3);
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
       return 0;
     }
+    if (!cl.positional().empty() && cl.positional()[0] == "bars") return runBars(cl);
     return run(parseArguments(cl));
   });
 }

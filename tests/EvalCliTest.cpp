@@ -169,3 +169,30 @@ TEST(EvalCli, BadDataNamesFileAndLine) {
   EXPECT_NE(lengths.output.find("same number of poses (2 vs 1)"), std::string::npos)
       << lengths.output;
 }
+
+TEST(EvalCli, BarsDrawsATableAndNamesItsBadLines) {
+  const std::string dir = dt::scratchDir();
+  const std::string table = dir + "/ape.tsv", png = dir + "/bars.png";
+  std::ofstream(table) << "# APE RMSE\nscenario\tnone\tremove\tfull\n"
+                       << "indoor_people_high\t0.3562\t0.02347\t0.02357\n"
+                       << "augmented_7scenes\t0.1697\t-\t0.08087\n";
+  const auto r = dt::runCommand(program() + " bars " + quoted(table) + " " + quoted(png) +
+                                " --title 'APE RMSE' --value-label 'APE RMSE (m)'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("2 groups x 3 series"), std::string::npos) << r.output;
+  const cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
+  EXPECT_FALSE(img.empty());
+
+  std::ofstream(dir + "/bad.tsv") << "scenario\tnone\tfull\nroom\t0.1\tzero\n";
+  const auto bad = dt::runCommand(program() + " bars " + quoted(dir + "/bad.tsv") + " " +
+                                  quoted(png));
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find(dir + "/bad.tsv:2: 'zero' is not a number"), std::string::npos)
+      << bad.output;
+
+  const auto ape_flag = dt::runCommand(program() + " bars " + quoted(table) + " " + quoted(png) +
+                                       " --align se3");
+  EXPECT_EQ(ape_flag.exit_code, 2);
+  EXPECT_NE(ape_flag.output.find("--align only applies to ape and rpe"), std::string::npos)
+      << ape_flag.output;
+}

@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace dynslam::evaluation {
 namespace {
@@ -63,18 +66,11 @@ int textWidth(const std::string& text, double scale = 0.45) {
   return cv::getTextSize(text, kFont, scale, 1, &baseline).width;
 }
 
-/// Grid, ticks with labels and axis titles of one panel; `x`/`y` carry the pixel intervals.
-void drawAxes(cv::Mat& img, const Axis& x, const Axis& y, const std::string& x_title,
-              const std::string& y_title) {
+/// Horizontal grid lines, ticks and labels of the vertical axis, the panel's frame and the
+/// axis title (written horizontally above the axis: OpenCV has no rotated text).
+void drawYAxis(cv::Mat& img, const Axis& x, const Axis& y, const std::string& y_title) {
   const cv::Rect frame(cv::Point(x.px_lo, y.px_hi), cv::Point(x.px_hi, y.px_lo));
-  const double x_step = niceStep(x.hi - x.lo, 8), y_step = niceStep(y.hi - y.lo, 6);
-  for (double v = std::ceil(x.lo / x_step) * x_step; v <= x.hi + 1e-9 * x_step; v += x_step) {
-    const int px = static_cast<int>(std::lround(x.toPixel(v)));
-    cv::line(img, {px, frame.y}, {px, frame.y + frame.height}, kGrid, 1);
-    cv::line(img, {px, y.px_lo}, {px, y.px_lo + 5}, kBlack, 1);
-    const std::string label = formatTick(v, x_step);
-    putLabel(img, label, {px - textWidth(label) / 2, y.px_lo + 20});
-  }
+  const double y_step = niceStep(y.hi - y.lo, 6);
   for (double v = std::ceil(y.lo / y_step) * y_step; v <= y.hi + 1e-9 * y_step; v += y_step) {
     const int py = static_cast<int>(std::lround(y.toPixel(v)));
     cv::line(img, {frame.x, py}, {frame.x + frame.width, py}, kGrid, 1);
@@ -83,9 +79,22 @@ void drawAxes(cv::Mat& img, const Axis& x, const Axis& y, const std::string& x_t
     putLabel(img, label, {x.px_lo - 8 - textWidth(label), py + 5});
   }
   cv::rectangle(img, frame, kBlack, 1);
-  putLabel(img, x_title, {(x.px_lo + x.px_hi - textWidth(x_title, 0.5)) / 2, y.px_lo + 45}, 0.5);
-  // Vertical axis title written horizontally above the axis: OpenCV has no rotated text.
   putLabel(img, y_title, {std::max(4, x.px_lo - 60), y.px_hi - 6}, 0.5);
+}
+
+/// Grid, ticks with labels and axis titles of one panel; `x`/`y` carry the pixel intervals.
+void drawAxes(cv::Mat& img, const Axis& x, const Axis& y, const std::string& x_title,
+              const std::string& y_title) {
+  const double x_step = niceStep(x.hi - x.lo, 8);
+  for (double v = std::ceil(x.lo / x_step) * x_step; v <= x.hi + 1e-9 * x_step; v += x_step) {
+    const int px = static_cast<int>(std::lround(x.toPixel(v)));
+    cv::line(img, {px, y.px_hi}, {px, y.px_lo}, kGrid, 1);
+    cv::line(img, {px, y.px_lo}, {px, y.px_lo + 5}, kBlack, 1);
+    const std::string label = formatTick(v, x_step);
+    putLabel(img, label, {px - textWidth(label) / 2, y.px_lo + 20});
+  }
+  drawYAxis(img, x, y, y_title);
+  putLabel(img, x_title, {(x.px_lo + x.px_hi - textWidth(x_title, 0.5)) / 2, y.px_lo + 45}, 0.5);
 }
 
 /// Extends [lo, hi] by a margin and guards against a zero span.
@@ -192,7 +201,107 @@ void drawErrorPlot(cv::Mat& img, const PlotInput& in, int top) {
   putLabel(img, label, {x.px_hi - textWidth(label) - 6, py - 6}, 0.45, kMeanColour);
 }
 
+/// Colours of a bar chart's series, in order (BGR; saturated, so that no bar is mistaken for
+/// the grid or the text).
+const cv::Scalar kSeriesColours[] = {{60, 60, 200},  {30, 150, 240}, {200, 110, 20},
+                                     {60, 160, 60},  {160, 70, 160}, {150, 150, 20}};
+
+/// `text` on one line, or on two split at the '_' or ' ' nearest its middle when it is wider
+/// than `width` pixels.
+std::vector<std::string> fitLabel(const std::string& text, int width) {
+  if (textWidth(text) <= width) return {text};
+  std::size_t best = std::string::npos;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if ((text[i] == '_' || text[i] == ' ') &&
+        (best == std::string::npos || std::abs(2.0 * i - text.size()) < std::abs(2.0 * best - text.size())))
+      best = i;
+  if (best == std::string::npos) return {text};
+  return {text.substr(0, best + 1), text.substr(best + 1)};
+}
+
+void writePng(const std::string& path, const cv::Mat& img) {
+  bool written = false;
+  try {
+    written = cv::imwrite(path, img);
+  } catch (const cv::Exception& e) {
+    throw EvaluationError("cannot write plot '" + path + "': " + e.what());
+  }
+  if (!written) throw EvaluationError("cannot write plot '" + path + "'");
+}
+
 }  // namespace
+
+void writeBarChartPng(const std::string& path, const BarChartInput& in) {
+  if (in.groups.empty() || in.series.empty())
+    throw EvaluationError("bar chart: no group or no series to draw");
+  if (in.series.size() > std::size(kSeriesColours))
+    throw EvaluationError("bar chart: at most " + std::to_string(std::size(kSeriesColours)) +
+                          " series");
+  if (in.values.size() != in.groups.size())
+    throw EvaluationError("bar chart: " + std::to_string(in.values.size()) + " rows of values for " +
+                          std::to_string(in.groups.size()) + " groups");
+  double top = 0;
+  for (std::size_t g = 0; g < in.values.size(); ++g) {
+    if (in.values[g].size() != in.series.size())
+      throw EvaluationError("bar chart: group '" + in.groups[g] + "' has " +
+                            std::to_string(in.values[g].size()) + " values for " +
+                            std::to_string(in.series.size()) + " series");
+    for (double v : in.values[g])
+      if (std::isfinite(v)) {
+        if (v < 0) throw EvaluationError("bar chart: negative value in group '" + in.groups[g] + "'");
+        top = std::max(top, v);
+      }
+  }
+  if (!(top > 0)) top = 1;
+
+  constexpr int kBarChartHeight = 560, kLegendRow = 20;
+  const int legend_height = kLegendRow * static_cast<int>(in.series.size()) + 10;
+  cv::Mat img(kTitleHeight + kBarChartHeight, kWidth, CV_8UC3, kWhite);
+  putLabel(img, in.title, {kMarginLeft, 28}, 0.6, kBlack, 1);
+  // Bars start at zero; the top leaves room for the value labels and the legend.
+  const Axis x{0, 1, kMarginLeft, kWidth - kMarginRight};
+  const int plot_top = kTitleHeight + kMarginTop + 10;
+  const Axis y{0, top * 1.12, kTitleHeight + kBarChartHeight - kMarginBottom,
+               plot_top + legend_height};
+  drawYAxis(img, x, y, in.value_label);
+
+  const int group_px = (x.px_hi - x.px_lo) / static_cast<int>(in.groups.size());
+  const int bar_px = std::max(2, group_px * 4 / 5 / static_cast<int>(in.series.size()));
+  for (std::size_t g = 0; g < in.groups.size(); ++g) {
+    const int left = x.px_lo + static_cast<int>(g) * group_px + (group_px - bar_px * static_cast<int>(in.series.size())) / 2;
+    for (std::size_t k = 0; k < in.series.size(); ++k) {
+      const double v = in.values[g][k];
+      const int bx = left + static_cast<int>(k) * bar_px;
+      if (!std::isfinite(v)) {  // a missing value: no bar, a dash on the baseline
+        putLabel(img, "-", {bx + (bar_px - textWidth("-")) / 2, y.px_lo - 4});
+        continue;
+      }
+      const int py = static_cast<int>(std::lround(y.toPixel(v)));
+      cv::rectangle(img, cv::Point(bx + 1, py), cv::Point(bx + bar_px - 2, y.px_lo - 1),
+                    kSeriesColours[k], cv::FILLED);
+      char label[32];
+      std::snprintf(label, sizeof label, "%.3g", v);
+      const double scale = textWidth(label, 0.4) <= bar_px - 2 ? 0.4 : 0.32;
+      putLabel(img, label, {bx + (bar_px - textWidth(label, scale)) / 2, py - 4}, scale);
+    }
+    const auto lines = fitLabel(in.groups[g], group_px - 6);
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const int centre = x.px_lo + static_cast<int>(g) * group_px + group_px / 2;
+      putLabel(img, lines[l], {centre - textWidth(lines[l]) / 2, y.px_lo + 20 + 18 * static_cast<int>(l)});
+    }
+  }
+  // Legend in the upper right corner, above the bars.
+  int legend_width = 0;
+  for (const auto& name : in.series) legend_width = std::max(legend_width, textWidth(name));
+  const cv::Rect box(x.px_hi - legend_width - 50, plot_top, legend_width + 40, legend_height - 6);
+  cv::rectangle(img, box, kBlack, 1);
+  for (std::size_t k = 0; k < in.series.size(); ++k) {
+    const int row = box.y + 6 + kLegendRow * static_cast<int>(k);
+    cv::rectangle(img, cv::Rect(box.x + 8, row + 2, 12, 12), kSeriesColours[k], cv::FILLED);
+    putLabel(img, in.series[k], {box.x + 28, row + 13});
+  }
+  writePng(path, img);
+}
 
 PlotPlane parsePlotPlane(const std::string& name) {
   if (name == "xy") return PlotPlane::XY;
@@ -211,14 +320,7 @@ void writePlotPng(const std::string& path, const PlotInput& in) {
   putLabel(img, in.title, {kMarginLeft, 28}, 0.6, kBlack, 1);
   drawTopView(img, in, kTitleHeight);
   drawErrorPlot(img, in, kTitleHeight + kTopHeight);
-
-  bool written = false;
-  try {
-    written = cv::imwrite(path, img);
-  } catch (const cv::Exception& e) {
-    throw EvaluationError("cannot write plot '" + path + "': " + e.what());
-  }
-  if (!written) throw EvaluationError("cannot write plot '" + path + "'");
+  writePng(path, img);
 }
 
 }  // namespace dynslam::evaluation
