@@ -92,10 +92,10 @@ void parseChoice(const dynslam::core::CommandLine& cl, const std::string& flag, 
 
 /// The flags of ape and rpe (none applies to bars).
 const char* const kTrajectoryFlags[] = {
-    "--format",    "--ref-format", "--est-format",   "--align",     "--t-max-diff",
-    "--t-offset",  "--pose-relation", "--json",      "--plot",      "--plot-plane",
-    "--delta",     "--delta-unit", "--delta-tol",    "--align-origin", "--all-pairs",
-    "--pairs-from-reference"};
+    "--format",     "--ref-format",   "--est-format",    "--align",
+    "--t-max-diff", "--t-offset",     "--pose-relation", "--json",
+    "--plot",       "--plot-plane",   "--delta",         "--delta-unit",
+    "--delta-tol",  "--align-origin", "--all-pairs",     "--pairs-from-reference"};
 
 Options parseArguments(const dynslam::core::CommandLine& cl) {
   Options o;
@@ -248,7 +248,8 @@ int runBars(const dynslam::core::CommandLine& cl) {
     throw UsageError("expected bars TABLE.tsv OUT.png, got " + std::to_string(positional.size()) +
                      " arguments");
   for (const char* flag : kTrajectoryFlags)
-    if (cl.has(flag)) throw UsageError(std::string("flag ") + flag + " only applies to ape and rpe");
+    if (cl.has(flag))
+      throw UsageError(std::string("flag ") + flag + " only applies to ape and rpe");
   ev::BarChartInput chart = readBarTable(positional[1]);
   chart.title = cl.valueOr("--title", "");
   chart.value_label = cl.valueOr("--value-label", "");

@@ -184,14 +184,14 @@ TEST(EvalCli, BarsDrawsATableAndNamesItsBadLines) {
   EXPECT_FALSE(img.empty());
 
   std::ofstream(dir + "/bad.tsv") << "scenario\tnone\tfull\nroom\t0.1\tzero\n";
-  const auto bad = dt::runCommand(program() + " bars " + quoted(dir + "/bad.tsv") + " " +
-                                  quoted(png));
+  const auto bad =
+      dt::runCommand(program() + " bars " + quoted(dir + "/bad.tsv") + " " + quoted(png));
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.output.find(dir + "/bad.tsv:2: 'zero' is not a number"), std::string::npos)
       << bad.output;
 
-  const auto ape_flag = dt::runCommand(program() + " bars " + quoted(table) + " " + quoted(png) +
-                                       " --align se3");
+  const auto ape_flag =
+      dt::runCommand(program() + " bars " + quoted(table) + " " + quoted(png) + " --align se3");
   EXPECT_EQ(ape_flag.exit_code, 2);
   EXPECT_NE(ape_flag.output.find("--align only applies to ape and rpe"), std::string::npos)
       << ape_flag.output;

@@ -203,8 +203,8 @@ void drawErrorPlot(cv::Mat& img, const PlotInput& in, int top) {
 
 /// Colours of a bar chart's series, in order (BGR; saturated, so that no bar is mistaken for
 /// the grid or the text).
-const cv::Scalar kSeriesColours[] = {{60, 60, 200},  {30, 150, 240}, {200, 110, 20},
-                                     {60, 160, 60},  {160, 70, 160}, {150, 150, 20}};
+const cv::Scalar kSeriesColours[] = {{60, 60, 200}, {30, 150, 240}, {200, 110, 20},
+                                     {60, 160, 60}, {160, 70, 160}, {150, 150, 20}};
 
 /// `text` on one line, or on two split at the '_' or ' ' nearest its middle when it is wider
 /// than `width` pixels.
@@ -213,7 +213,8 @@ std::vector<std::string> fitLabel(const std::string& text, int width) {
   std::size_t best = std::string::npos;
   for (std::size_t i = 0; i < text.size(); ++i)
     if ((text[i] == '_' || text[i] == ' ') &&
-        (best == std::string::npos || std::abs(2.0 * i - text.size()) < std::abs(2.0 * best - text.size())))
+        (best == std::string::npos ||
+         std::abs(2.0 * i - text.size()) < std::abs(2.0 * best - text.size())))
       best = i;
   if (best == std::string::npos) return {text};
   return {text.substr(0, best + 1), text.substr(best + 1)};
@@ -238,8 +239,8 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
     throw EvaluationError("bar chart: at most " + std::to_string(std::size(kSeriesColours)) +
                           " series");
   if (in.values.size() != in.groups.size())
-    throw EvaluationError("bar chart: " + std::to_string(in.values.size()) + " rows of values for " +
-                          std::to_string(in.groups.size()) + " groups");
+    throw EvaluationError("bar chart: " + std::to_string(in.values.size()) +
+                          " rows of values for " + std::to_string(in.groups.size()) + " groups");
   double top = 0;
   for (std::size_t g = 0; g < in.values.size(); ++g) {
     if (in.values[g].size() != in.series.size())
@@ -248,7 +249,8 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
                             std::to_string(in.series.size()) + " series");
     for (double v : in.values[g])
       if (std::isfinite(v)) {
-        if (v < 0) throw EvaluationError("bar chart: negative value in group '" + in.groups[g] + "'");
+        if (v < 0)
+          throw EvaluationError("bar chart: negative value in group '" + in.groups[g] + "'");
         top = std::max(top, v);
       }
   }
@@ -268,7 +270,8 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
   const int group_px = (x.px_hi - x.px_lo) / static_cast<int>(in.groups.size());
   const int bar_px = std::max(2, group_px * 4 / 5 / static_cast<int>(in.series.size()));
   for (std::size_t g = 0; g < in.groups.size(); ++g) {
-    const int left = x.px_lo + static_cast<int>(g) * group_px + (group_px - bar_px * static_cast<int>(in.series.size())) / 2;
+    const int left = x.px_lo + static_cast<int>(g) * group_px +
+                     (group_px - bar_px * static_cast<int>(in.series.size())) / 2;
     for (std::size_t k = 0; k < in.series.size(); ++k) {
       const double v = in.values[g][k];
       const int bx = left + static_cast<int>(k) * bar_px;
@@ -287,7 +290,8 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
     const auto lines = fitLabel(in.groups[g], group_px - 6);
     for (std::size_t l = 0; l < lines.size(); ++l) {
       const int centre = x.px_lo + static_cast<int>(g) * group_px + group_px / 2;
-      putLabel(img, lines[l], {centre - textWidth(lines[l]) / 2, y.px_lo + 20 + 18 * static_cast<int>(l)});
+      putLabel(img, lines[l],
+               {centre - textWidth(lines[l]) / 2, y.px_lo + 20 + 18 * static_cast<int>(l)});
     }
   }
   // Legend in the upper right corner, above the bars.

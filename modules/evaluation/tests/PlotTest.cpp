@@ -40,9 +40,11 @@ std::vector<Bar> barsOf(const cv::Mat& img) {
   for (int i = 1; i < n; ++i) {
     const cv::Rect r(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
                      stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
-    if (r.height > 20) bars.push_back({r, img.at<cv::Vec3b>(r.y + r.height / 2, r.x + r.width / 2)});
+    if (r.height > 20)
+      bars.push_back({r, img.at<cv::Vec3b>(r.y + r.height / 2, r.x + r.width / 2)});
   }
-  std::sort(bars.begin(), bars.end(), [](const Bar& a, const Bar& b) { return a.rect.x < b.rect.x; });
+  std::sort(bars.begin(), bars.end(),
+            [](const Bar& a, const Bar& b) { return a.rect.x < b.rect.x; });
   return bars;
 }
 
