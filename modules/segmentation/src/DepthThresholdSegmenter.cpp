@@ -56,13 +56,72 @@ cv::Rect2d candidateBox(const cv::Rect& roi) {
   return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
 }
 
+// Calls `visit(point, depth)` for the valid-depth points of an even grid of about `count`
+// points over `region`.
+template <typename Visit>
+void forGridPoints(const cv::Mat& depth, const cv::Rect2d& region, int count, Visit visit) {
+  const cv::Size grid = gridShape(count, region.width, region.height);
+  const cv::Rect image(0, 0, depth.cols, depth.rows);
+  for (int r = 0; r < grid.height; ++r)
+    for (int c = 0; c < grid.width; ++c) {
+      const cv::Point p(static_cast<int>(region.x + (c + 0.5) * region.width / grid.width),
+                        static_cast<int>(region.y + (r + 0.5) * region.height / grid.height));
+      if (!image.contains(p)) continue;
+      const float z = depth.at<float>(p);
+      if (z > 0 && std::isfinite(z)) visit(p, z);
+    }
+}
+
+// Does the detection boxed `front` stand in front of the one boxed `back`, whose candidate
+// samples split into 2-means clusters `c`? On a flat floor the box reaching lower in the image
+// is the nearer one. People close to the camera are cut off by the image's bottom edge, though,
+// and then that says nothing. Then the near surface is `front`'s when (a) `back`'s near samples
+// lie inside `front`'s box (an occluder's pixels are inside its box; a person beside `back` at
+// the same depth shows also outside it), and (b) the surface also shows in `front`'s candidate
+// box outside `back`'s box (an occluder is larger than the part of it in front of `back`; a
+// person behind `back` shows there at its own, farther, depth).
+bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& back,
+                   const TwoMeansResult& c, double margin, int samples) {
+  const int frontBottom = front.y + front.height, backBottom = back.y + back.height;
+  if (frontBottom < depth.rows || backBottom < depth.rows) return frontBottom > backBottom;
+  int nearSamples = 0, nearInside = 0;
+  forGridPoints(depth, candidateBox(back), samples, [&](cv::Point p, float z) {
+    if (std::abs(z - c.near_mean) >= std::abs(z - c.far_mean)) return;
+    ++nearSamples;
+    nearInside += front.contains(p);
+  });
+  if (nearSamples == 0 || nearInside < 0.9 * nearSamples) return false;
+  int outside = 0, onSurface = 0;
+  forGridPoints(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
+    if (back.contains(p)) return;
+    ++outside;
+    onSurface += std::abs(z - c.near_mean) < margin;
+  });
+  return outside > 0 && onSurface >= 0.3 * outside;
+}
+
+// The clusters of a box whose near cluster `c.near_mean` is an occluder: what lies behind it
+// (the far cluster's samples, the last of `sorted`) may itself be the object in front of the
+// background, which the far cluster's mean would blur into one depth. The same rule as without
+// an occluder then picks the object: of two clusters more than `e` apart, the nearer.
+TwoMeansResult behindOccluder(const std::vector<float>& sorted, const TwoMeansResult& c, double e) {
+  std::vector<float> behind(sorted.end() - c.far_count, sorted.end());
+  const TwoMeansResult rest = twoMeans(behind);
+  if (!rest.two_clusters || rest.far_mean - rest.near_mean <= e) return c;
+  TwoMeansResult out = c;
+  out.far_mean = rest.near_mean;
+  out.far_count = rest.near_count;
+  return out;
+}
+
 }  // namespace
 
 bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::Rect& roi,
-                                                TwoMeansResult& out) const {
+                                                TwoMeansResult& out,
+                                                std::vector<float>& samples) const {
   if (roi.empty()) return false;
   // Steps 1-3: the candidate box M (same centre, half the size), m grid samples, 2-means.
-  std::vector<float> samples;
+  samples.clear();
   samples.reserve(params_.m);
   const int gridPoints = sampleGrid(depth, candidateBox(roi), params_.m, samples);
   const int needed =
@@ -81,7 +140,8 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
   out.detection = detectionIndex;
   out.roi = pixelRoi(detection.box, depth.size());
   TwoMeansResult clusters;
-  if (!candidateClusters(depth, out.roi, clusters)) return out;
+  std::vector<float> samples;
+  if (!candidateClusters(depth, out.roi, clusters, samples)) return out;
   bool nearIsObject = false;
   if (params_.object_cluster == ObjectCluster::Larger)
     nearIsObject = clusters.near_count > clusters.far_count;
@@ -140,10 +200,11 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
   const size_t n = detections.size();
   std::vector<cv::Rect> rois(n);
   std::vector<TwoMeansResult> clusters(n);
+  std::vector<std::vector<float>> samples(n);
   std::vector<char> ok(n);
   for (size_t i = 0; i < n; ++i) {
     rois[i] = pixelRoi(detections[i].box, depth.size());
-    ok[i] = candidateClusters(depth, rois[i], clusters[i]);
+    ok[i] = candidateClusters(depth, rois[i], clusters[i], samples[i]);
   }
   for (size_t i = 0; i < n; ++i) {
     if (!ok[i]) {
@@ -153,20 +214,22 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
       masks.push_back(empty);
       continue;
     }
-    const TwoMeansResult& c = clusters[i];
+    TwoMeansResult c = clusters[i];
     const double e = marginFor(detections[i]);
     bool nearIsObject = c.two_clusters && c.far_mean - c.near_mean > e;
-    if (nearIsObject) {
-      // Is the near surface another detection standing in front?
-      const cv::Rect2d candidate = candidateBox(rois[i]);
-      for (size_t j = 0; j < n && nearIsObject; ++j) {
-        if (j == i || !ok[j] || (cv::Rect2d(rois[j]) & candidate).empty()) continue;
-        if (rois[j].y + rois[j].height <= rois[i].y + rois[i].height) continue;
-        const double ej = marginFor(detections[j]);
-        const double nearest = clusters[j].two_clusters ? clusters[j].near_mean : clusters[j].far_mean;
-        if (std::abs(nearest - c.near_mean) < ej || std::abs(clusters[j].far_mean - c.near_mean) < ej)
-          nearIsObject = false;
-      }
+    // Is the near surface another detection standing in front?
+    const cv::Rect2d candidate = candidateBox(rois[i]);
+    for (size_t j = 0; j < n && nearIsObject; ++j) {
+      if (j == i || !ok[j] || (cv::Rect2d(rois[j]) & candidate).empty()) continue;
+      const double ej = marginFor(detections[j]);
+      const double nearest =
+          clusters[j].two_clusters ? clusters[j].near_mean : clusters[j].far_mean;
+      if (std::abs(nearest - c.near_mean) >= ej &&
+          std::abs(clusters[j].far_mean - c.near_mean) >= ej)
+        continue;
+      if (!standsInFront(depth, rois[j], rois[i], c, ej / 2, params_.m)) continue;
+      nearIsObject = false;
+      c = behindOccluder(samples[i], c, e);
     }
     masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject));
   }

@@ -64,3 +64,58 @@ TEST(OccluderAwareCluster, APersonStandingInFrontIsStillTheOccluder) {
   EXPECT_NEAR(masks[1].d_t, 4.0, 1e-6) << "B: A's surface in its candidate box is A's";
   EXPECT_NEAR(masks[1].d_o, 2.0, 1e-6);
 }
+
+namespace {
+
+/// A wall 6 m away with the given people (box, body columns, depth) drawn in order (later in
+/// front); every box reaches the image's bottom edge, as people close to the camera do.
+struct Body {
+  cv::Rect box;
+  int bodyX0, bodyX1;
+  float depth;
+};
+cv::Mat peopleCutOffAtTheBottom(const std::vector<Body>& people) {
+  cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(6.0f));
+  for (const auto& p : people)
+    depth(cv::Rect(p.bodyX0, p.box.y, p.bodyX1 - p.bodyX0, p.box.height)).setTo(p.depth);
+  return depth;
+}
+
+}  // namespace
+
+TEST(OccluderAwareCluster, APersonInFrontIsTheOccluderAlsoWhenBothAreCutOffAtTheBottom) {
+  // Both boxes end at the image's bottom edge, so their bottoms cannot tell which stands in
+  // front; A's surface continues outside B's box and B's near samples all lie in A's box.
+  const Body a{{60, 0, 120, 240}, 60, 180, 1.2f}, b{{140, 40, 80, 200}, 140, 220, 2.5f};
+  const cv::Mat depth = peopleCutOffAtTheBottom({b, a});
+  const auto masks =
+      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  EXPECT_NEAR(masks[0].d_t, 1.2, 1e-6) << "A";
+  EXPECT_NEAR(masks[1].d_t, 2.5, 1e-6) << "B, behind A";
+  EXPECT_NEAR(masks[1].d_o, 1.2, 1e-6);
+}
+
+TEST(OccluderAwareCluster, PeopleSideBySideAtOneDepthKeepTheirOwnDepth) {
+  // A (wall between the legs in its candidate box) and B beside it at the same depth, B's box
+  // overlapping A's candidate box: A's near samples are mostly outside B's box, so B is not
+  // A's occluder and A is not taken for the wall.
+  const Body a{{40, 0, 100, 240}, 50, 110, 1.5f}, b{{100, 0, 100, 240}, 150, 190, 1.5f};
+  cv::Mat depth = peopleCutOffAtTheBottom({a, b});
+  depth(cv::Rect(75, 120, 10, 120)).setTo(6.0f);  // between A's legs
+  const auto masks =
+      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  EXPECT_NEAR(masks[0].d_t, 1.5, 1e-6) << "A";
+  EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
+}
+
+TEST(OccluderAwareCluster, BehindAnOccluderThePersonIsNotBlurredWithTheWall) {
+  // B 3 m away, half hidden by A 1 m away, the wall 4.2 m away showing beside B in B's
+  // candidate box: the far cluster mixes B and the wall; split again, B is its near part.
+  const Body a{{60, 0, 120, 240}, 60, 180, 1.0f}, b{{140, 40, 80, 200}, 185, 215, 3.0f};
+  cv::Mat depth = peopleCutOffAtTheBottom({b, a});
+  depth.setTo(4.2f, depth == 6.0f);
+  const auto masks =
+      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  EXPECT_NEAR(masks[1].d_t, 3.0, 1e-6) << "B";
+  EXPECT_NEAR(masks[1].d_o, 1.0, 1e-6) << "A";
+}

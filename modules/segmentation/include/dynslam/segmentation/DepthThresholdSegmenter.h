@@ -86,7 +86,9 @@ class DepthThresholdSegmenter {
 
  private:
   /// Steps 1-3 for one box: the 2-means of its candidate box, or nothing without enough depth.
-  bool candidateClusters(const cv::Mat& depth, const cv::Rect& roi, TwoMeansResult& out) const;
+  /// `samples`: the valid depth samples, sorted.
+  bool candidateClusters(const cv::Mat& depth, const cv::Rect& roi, TwoMeansResult& out,
+                         std::vector<float>& samples) const;
   /// Steps 4-8 with the object's cluster given.
   core::ObjectMask segmentWith(const cv::Mat& depth, const core::Detection& detection,
                                int detectionIndex, const TwoMeansResult& clusters,
