@@ -12,26 +12,19 @@ namespace {
 /// indoor_people_high: mask IoU 0.808 / 0.808 / 0.806 with 0.03 / 0.05 / 0.1.
 constexpr float kSurfaceStep = 0.05f;
 
-}  // namespace
-
-void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) {
-  // Only the overlaps hold pixels of several masks: work in their bounding rectangle, one pixel
-  // wider so that each mask's own pixels along it can start the search.
-  const size_t n = std::min<size_t>(masks.size(), 64);  // one bit per mask
+/// The search in `area` for `n` masks, one bit each in a `Bits` per pixel: 8 bits cover the
+/// usual few people at an eighth of the memory traffic of 64 (indoor_people_high: about 15 %
+/// less time per frame).
+template <typename Bits>
+void resolveInArea(std::vector<core::ObjectMask>& masks, size_t n, const cv::Mat& depth,
+                   cv::Rect area) {
   auto usable = [&](size_t k) { return masks[k].valid && !masks[k].mask.empty(); };
-  cv::Rect area;
-  for (size_t a = 0; a < n; ++a)
-    for (size_t b = a + 1; b < n; ++b)
-      if (usable(a) && usable(b)) area |= masks[a].roi & masks[b].roi;
-  if (area.empty()) return;
-  area = cv::Rect(area.x - 1, area.y - 1, area.width + 2, area.height + 2) &
-         cv::Rect(0, 0, depth.cols, depth.rows);
   // The grids below have one more pixel on every side that no mask holds, so that the search
   // needs no bounds checks: pixel (x, y) of `area` is index (y + 1) * W + x + 1.
   const int W = area.width + 2, H = area.height + 2;
   const size_t N = size_t(W) * H;
   auto index = [&](int x, int y) { return size_t(y - area.y + 1) * W + (x - area.x + 1); };
-  std::vector<std::uint64_t> holders(N, 0);  // bit k: masks[k] holds the pixel
+  std::vector<Bits> holders(N, 0);  // bit k: masks[k] holds the pixel
   std::vector<float> z(N, 0.f);
   for (int y = area.y; y < area.br().y; ++y) {
     const float* row = depth.ptr<float>(y);
@@ -42,32 +35,33 @@ void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& 
     const cv::Rect r = masks[k].roi & area;
     for (int y = r.y; y < r.br().y; ++y) {
       const uint8_t* row = masks[k].mask.ptr<uint8_t>(y - masks[k].roi.y) - masks[k].roi.x;
-      std::uint64_t* h = holders.data() + index(area.x, y) - area.x;  // h[x]: pixel (x, y)
+      Bits* h = holders.data() + index(area.x, y) - area.x;  // h[x]: pixel (x, y)
       for (int x = r.x; x < r.br().x; ++x)
-        if (row[x]) h[x] |= std::uint64_t(1) << k;
+        if (row[x]) h[x] |= Bits(Bits(1) << k);
     }
   }
   // owner: the mask whose surface reached the pixel (its only holder for pixels one mask
   // holds); -1: shared and not reached yet; -2: no mask holds it.
   std::vector<int8_t> owner(N, -2);
   for (size_t p = 0; p < N; ++p) {
-    const std::uint64_t h = holders[p];
+    const Bits h = holders[p];
     if (h) owner[p] = (h & (h - 1)) == 0 ? int8_t(__builtin_ctzll(h)) : int8_t(-1);
   }
   // Breadth-first from every mask's own pixels beside shared ones into the shared ones, across
   // neighbours one surface step apart: a shared pixel goes to the object whose surface reaches
   // it first.
   const std::ptrdiff_t step[4] = {-1, 1, -std::ptrdiff_t(W), std::ptrdiff_t(W)};
-  std::vector<size_t> queue;
+  std::vector<std::uint32_t> queue;  // grid indices (the grid is at most an image)
+  queue.reserve(N);
   for (size_t p = size_t(W); p + W < N; ++p)
     if (owner[p] >= 0 &&
         (owner[p - 1] == -1 || owner[p + 1] == -1 || owner[p - W] == -1 || owner[p + W] == -1))
-      queue.push_back(p);
+      queue.push_back(std::uint32_t(p));
   for (size_t head = 0; head < queue.size(); ++head) {
-    const size_t p = queue[head];
+    const std::uint32_t p = queue[head];
     const int k = owner[p];
     for (std::ptrdiff_t d : step) {
-      const size_t q = p + d;
+      const std::uint32_t q = std::uint32_t(p + d);
       if (owner[q] != -1 || !(holders[q] >> k & 1) || !(std::abs(z[q] - z[p]) < kSurfaceStep))
         continue;
       owner[q] = int8_t(k);
@@ -77,7 +71,7 @@ void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& 
   for (int y = area.y; y < area.br().y; ++y)
     for (int x = area.x; x < area.br().x; ++x) {
       const size_t p = index(x, y);
-      const std::uint64_t h = holders[p];
+      const Bits h = holders[p];
       if ((h & (h - 1)) == 0) continue;  // held by one mask or none
       int keep = owner[p];
       if (keep < 0) {  // no surface reached it: the object whose d_t is closest to its depth
@@ -92,6 +86,26 @@ void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& 
         if ((h >> k & 1) && int(k) != keep)
           masks[k].mask.at<uint8_t>(y - masks[k].roi.y, x - masks[k].roi.x) = 0;
     }
+}
+
+}  // namespace
+
+void resolveByConnectivity(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) {
+  // Only the overlaps hold pixels of several masks: work in their bounding rectangle, one pixel
+  // wider so that each mask's own pixels along it can start the search.
+  const size_t n = std::min<size_t>(masks.size(), 64);  // one bit per mask
+  auto usable = [&](size_t k) { return masks[k].valid && !masks[k].mask.empty(); };
+  cv::Rect area;
+  for (size_t a = 0; a < n; ++a)
+    for (size_t b = a + 1; b < n; ++b)
+      if (usable(a) && usable(b)) area |= masks[a].roi & masks[b].roi;
+  if (area.empty()) return;
+  area = cv::Rect(area.x - 1, area.y - 1, area.width + 2, area.height + 2) &
+         cv::Rect(0, 0, depth.cols, depth.rows);
+  if (n <= 8)
+    resolveInArea<std::uint8_t>(masks, n, depth, area);
+  else
+    resolveInArea<std::uint64_t>(masks, n, depth, area);
 }
 
 }  // namespace dynslam::segmentation
