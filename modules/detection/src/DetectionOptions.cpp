@@ -34,6 +34,7 @@ void DetectionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     // std::invalid_argument for an unknown name; DetectionStage adds the section and source.
     o.layout = parseYoloLayout(c.read_string(s, "layout", layoutName(o.layout)));
     o.input_size = c.read_int(s, "input_size", o.input_size);
+    o.trim_padding = c.read_bool(s, "trim_padding", o.trim_padding);
     o.confidence = c.read_double(s, "confidence", o.confidence);
     o.nms_iou = c.read_double(s, "nms_iou", o.nms_iou);
     o.threads = c.read_int(s, "threads", o.threads);
@@ -70,7 +71,11 @@ void DetectionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     core::writeKey(c, s, "model", o.model, "ONNX file (relative: working directory)");
     core::writeKey(c, s, "layout", layoutName(o.layout),
         "output layout: yolox (BGR 0-255) | yolov5 | yolov8 (RGB 0-1)");
-    core::writeKey(c, s, "input_size", o.input_size, "square network input, px (multiple of 32)");
+    core::writeKey(c, s, "input_size", o.input_size,
+                   "network input, px (multiple of 32), the image's longer side");
+    core::writeKey(c, s, "trim_padding", o.trim_padding,
+                   "drop the letterbox's grey rows (416x320, not 416x416, for 4:3); false for a "
+                   "model with a fixed square input");
     core::writeKey(c, s, "confidence", o.confidence, "minimum score (objectness x class)");
     core::writeKey(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold within a category");
     core::writeKey(c, s, "threads", o.threads, "cv::setNumThreads (process-wide); 0: default");

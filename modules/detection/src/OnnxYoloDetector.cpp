@@ -40,15 +40,24 @@ std::vector<core::Detection> OnnxYoloDetector::detect(const core::Frame& frame) 
 std::vector<core::Detection> OnnxYoloDetector::detectImage(const cv::Mat& bgr) {
   const auto& s = settings_;
   Letterbox letterbox;
-  const cv::Mat input = letterbox.apply(bgr, s.input_size);
+  const cv::Mat input = letterbox.apply(bgr, s.input_size, s.trim_padding);
   const bool ultralytics = s.layout != YoloLayout::YoloX;
   net_.setInput(cv::dnn::blobFromImage(input, ultralytics ? 1.0 / 255.0 : 1.0, cv::Size(),
                                        cv::Scalar(), /*swapRB=*/ultralytics, /*crop=*/false));
-  const cv::Mat output = net_.forward();
+  cv::Mat output;
+  try {
+    output = net_.forward();
+  } catch (const cv::Exception& e) {
+    if (!s.trim_padding) throw;
+    throw DetectorError("YOLO model '" + s.model + "' does not take a " +
+                        std::to_string(input.cols) + "x" + std::to_string(input.rows) +
+                        " input (exported with a fixed square input?): set trim_padding = false (" +
+                        e.what() + ")");
+  }
 
   std::vector<YoloCandidate> candidates;
   try {
-    candidates = decodeYoloOutput(output, s.layout, s.input_size, static_cast<float>(s.confidence));
+    candidates = decodeYoloOutput(output, s.layout, input.size(), static_cast<float>(s.confidence));
   } catch (const std::invalid_argument& e) {
     throw DetectorError("YOLO model '" + s.model + "': " + e.what() + " (is `layout` right?)");
   }

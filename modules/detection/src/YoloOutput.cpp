@@ -26,20 +26,20 @@ cv::Rect2f fromCentre(float cx, float cy, float w, float h) {
   return {cx - 0.5f * w, cy - 0.5f * h, w, h};
 }
 
-void decodeYoloX(const cv::Mat& out, int input_size, float min_score,
+void decodeYoloX(const cv::Mat& out, cv::Size input, float min_score,
                  std::vector<YoloCandidate>& result) {
   const int rows = out.size[1], width = out.size[2], classes = width - 5;
   int expected = 0;
-  for (const int stride : {8, 16, 32}) expected += (input_size / stride) * (input_size / stride);
+  for (const int stride : {8, 16, 32}) expected += (input.width / stride) * (input.height / stride);
   if (rows != expected || classes < 1)
-    throw std::invalid_argument("YOLOX output " + shapeOf(out) + " does not fit input size " +
-                                std::to_string(input_size) + " (expected 1x" +
-                                std::to_string(expected) + "x(5 + classes))");
+    throw std::invalid_argument("YOLOX output " + shapeOf(out) + " does not fit an input of " +
+                                std::to_string(input.width) + "x" + std::to_string(input.height) +
+                                " (expected 1x" + std::to_string(expected) + "x(5 + classes))");
   const float* p = out.ptr<float>();
   for (const int stride : {8, 16, 32}) {
-    const int grid = input_size / stride;
-    for (int gy = 0; gy < grid; ++gy)
-      for (int gx = 0; gx < grid; ++gx, p += width) {
+    const int cols = input.width / stride, gridRows = input.height / stride;
+    for (int gy = 0; gy < gridRows; ++gy)
+      for (int gx = 0; gx < cols; ++gx, p += width) {
         const float objectness = p[4];
         if (objectness < min_score) continue;  // the product cannot reach min_score
         const auto [cls, cls_score] = bestClass(p + 5, classes, 1);
@@ -89,11 +89,12 @@ YoloLayout parseYoloLayout(const std::string& name) {
                               "' (expected yolox, yolov5 or yolov8)");
 }
 
-cv::Mat Letterbox::apply(const cv::Mat& bgr, int input_size) {
+cv::Mat Letterbox::apply(const cv::Mat& bgr, int input_size, bool trim) {
   scale = std::min(double(input_size) / bgr.cols, double(input_size) / bgr.rows);
   const cv::Size resized(std::max(1, int(std::lround(bgr.cols * scale))),
                          std::max(1, int(std::lround(bgr.rows * scale))));
-  cv::Mat input(input_size, input_size, CV_8UC3, cv::Scalar::all(114));
+  const auto side = [&](int pixels) { return trim ? (pixels + 31) / 32 * 32 : input_size; };
+  cv::Mat input(side(resized.height), side(resized.width), CV_8UC3, cv::Scalar::all(114));
   cv::Mat top_left = input(cv::Rect(cv::Point(0, 0), resized));  // resize writes into it
   cv::resize(bgr, top_left, resized, 0, 0, cv::INTER_LINEAR);
   return input;
@@ -105,14 +106,14 @@ cv::Rect2f Letterbox::toImage(const cv::Rect2f& b) const {
 }
 
 std::vector<YoloCandidate> decodeYoloOutput(const cv::Mat& output, YoloLayout layout,
-                                            int input_size, float min_score) {
+                                            cv::Size input, float min_score) {
   if (output.dims != 3 || output.size[0] != 1 || output.type() != CV_32F || !output.isContinuous())
     throw std::invalid_argument("YOLO output " + shapeOf(output) +
                                 ": expected a continuous 3-dimensional float blob of batch 1");
   std::vector<YoloCandidate> result;
   switch (layout) {
     case YoloLayout::YoloX:
-      decodeYoloX(output, input_size, min_score, result);
+      decodeYoloX(output, input, min_score, result);
       break;
     case YoloLayout::YoloV5:
       decodeYoloV5(output, min_score, result);

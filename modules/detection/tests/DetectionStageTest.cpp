@@ -128,7 +128,7 @@ TEST(DetectionStage, EveryKeyWrittenIsReadBackForEachDetector) {
   det::DetectionOptions written;
   written.mode = "realtime";
   written.class_map = "person:person:non_rigid bus:car:rigid";
-  written.onnx_yolo = {"m.onnx", det::YoloLayout::YoloV8, 320, 0.5, 0.6, 1};
+  written.onnx_yolo = {"m.onnx", det::YoloLayout::YoloV8, 320, 0.5, 0.6, 1, false};
   written.hog = {1.1, 0.3, 16, 96, 0.3};
   written.ground_truth.objects = "o.txt";
   written.ground_truth.miss_rate = 0.1;
@@ -154,6 +154,7 @@ TEST(DetectionStage, EveryKeyWrittenIsReadBackForEachDetector) {
       EXPECT_DOUBLE_EQ(read.onnx_yolo.confidence, 0.5);
       EXPECT_DOUBLE_EQ(read.onnx_yolo.nms_iou, 0.6);
       EXPECT_EQ(read.onnx_yolo.threads, 1);
+      EXPECT_FALSE(read.onnx_yolo.trim_padding);
     } else if (written.detector == "hog") {
       EXPECT_DOUBLE_EQ(read.hog.scale, 1.1);
       EXPECT_DOUBLE_EQ(read.hog.hit_threshold, 0.3);

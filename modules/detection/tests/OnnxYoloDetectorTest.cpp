@@ -50,21 +50,49 @@ TEST(OnnxYoloDetector, YoloxNanoFindsBothPlayersInBasketball1AtInput416And320) {
   DYNSLAM_REQUIRE_SHARED(model, "models/yolox_nano.onnx");
   DYNSLAM_REQUIRE_OPENCV_DOC(image_path, "basketball1.png");
   const cv::Mat image = cv::imread(image_path);
-  for (const int input_size : {416, 320}) {
-    det::OnnxYoloDetectorSettings settings;
-    settings.model = model;
-    settings.input_size = input_size;
-    det::OnnxYoloDetector detector(settings, det::ClassMap());
-    const auto found = detector.detectImage(image);
-    // Two players, one in each half of the 640x480 image, each about 400 px tall.
-    ASSERT_EQ(confidentPeople(found, 0.7f), 2) << "input " << input_size;
-    bool left = false, right = false;
-    for (const auto& d : found) {
-      EXPECT_GT(d.box.height, 350.f);
-      EXPECT_EQ(d.model, dynslam::core::MotionModel::NonRigid);
-      (d.box.x + 0.5f * d.box.width < 320 ? left : right) = true;
+  for (const int input_size : {416, 320})
+    for (const bool trim : {true, false}) {
+      det::OnnxYoloDetectorSettings settings;
+      settings.model = model;
+      settings.input_size = input_size;
+      settings.trim_padding = trim;
+      det::OnnxYoloDetector detector(settings, det::ClassMap());
+      const auto found = detector.detectImage(image);
+      // Two players, one in each half of the 640x480 image, each about 400 px tall.
+      ASSERT_EQ(confidentPeople(found, 0.7f), 2) << "input " << input_size << ", trim " << trim;
+      bool left = false, right = false;
+      for (const auto& d : found) {
+        EXPECT_GT(d.box.height, 350.f);
+        EXPECT_EQ(d.model, dynslam::core::MotionModel::NonRigid);
+        (d.box.x + 0.5f * d.box.width < 320 ? left : right) = true;
+      }
+      EXPECT_TRUE(left && right) << "input " << input_size << ", trim " << trim;
     }
-    EXPECT_TRUE(left && right) << "input " << input_size;
+}
+
+TEST(OnnxYoloDetector, TrimmedPaddingFindsTheSameBoxesAsTheSquareInput) {
+  DYNSLAM_REQUIRE_SHARED(model, "models/yolox_nano.onnx");
+  DYNSLAM_REQUIRE_OPENCV_DOC(video, "vtest.avi");
+  const auto frames = det::testing::vtestFrames({0, 300, 600});
+  ASSERT_EQ(frames.size(), 3u);
+  det::OnnxYoloDetectorSettings settings;
+  settings.model = model;
+  det::OnnxYoloDetector trimmed(settings, det::ClassMap());
+  settings.trim_padding = false;
+  det::OnnxYoloDetector square(settings, det::ClassMap());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const auto a = trimmed.detectImage(frames[i]), b = square.detectImage(frames[i]);
+    // The network sees the same pixels: each confident square-input box has a trimmed twin.
+    int confident = 0;
+    for (const auto& s : b) {
+      if (s.score < 0.5f) continue;
+      ++confident;
+      double best = 0;
+      for (const auto& t : a)
+        best = std::max(best, double((s.box & t.box).area()) / (s.box | t.box).area());
+      EXPECT_GT(best, 0.8) << "frame " << i << ": box at " << s.box.x << "," << s.box.y;
+    }
+    EXPECT_GE(confident, 3) << "frame " << i;
   }
 }
 

@@ -16,11 +16,15 @@ namespace dynslam::detection {
 struct OnnxYoloDetectorSettings {
   std::string model = "../shared/models/yolox_nano.onnx";  ///< ONNX file
   YoloLayout layout = YoloLayout::YoloX;
-  int input_size = 416;      ///< square network input, pixels (a multiple of 32)
+  int input_size = 416;      ///< network input, pixels (a multiple of 32): the image's longer side
   double confidence = 0.35;  ///< minimum score (objectness x class score, or class score)
   double nms_iou = 0.45;     ///< boxes of one category overlapping more than this are merged
   /// OpenCV threads (cv::setNumThreads, which is process-wide); 0 leaves OpenCV's default.
   int threads = 0;
+  /// Drop the letterbox's grey rows (Letterbox::apply): 416 x 320 rather than 416 x 416 for a
+  /// 4:3 image, the same detections for three quarters of the work. A model exported with a
+  /// fixed square input shape cannot take it: then false.
+  bool trim_padding = true;
 };
 
 class OnnxYoloDetector : public Detector {
