@@ -285,7 +285,9 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
       char label[32];
       std::snprintf(label, sizeof label, "%.3g", v);
       const double scale = textWidth(label, 0.4) <= bar_px - 2 ? 0.4 : 0.32;
-      putLabel(img, label, {bx + (bar_px - textWidth(label, scale)) / 2, py - 4}, scale);
+      // A label wider than its bar would run into its neighbour's: every other one goes a line up.
+      const int lift = textWidth(label, scale) > bar_px - 2 && k % 2 == 1 ? 12 : 0;
+      putLabel(img, label, {bx + (bar_px - textWidth(label, scale)) / 2, py - 4 - lift}, scale);
     }
     const auto lines = fitLabel(in.groups[g], group_px - 6);
     for (std::size_t l = 0; l < lines.size(); ++l) {
