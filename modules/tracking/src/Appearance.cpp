@@ -9,21 +9,36 @@
 namespace dynslam::tracking {
 namespace {
 
+/// Every kStride-th pixel of every kStride-th row counts: a person's box holds tens of thousands
+/// of pixels, far more than 68 bins need, and the tracker runs every frame (indoor_people_high:
+/// Tracking stage with re-identification 0.85 -> 0.19 ms per frame at a stride of 3, true-depth
+/// IDF1 unchanged, 0.535 -> 0.494 with the segmentation's depth at seed 1).
+constexpr int kStride = 3;
+
 /// Adds the hue-saturation histogram of the pixels of `region` in `bgr` whose depth is within
 /// the band of `objectDepth` (all of them when `depth` is empty) to `h` (kPartBins values),
-/// normalised to sum to 1; false, leaving `h` zero, when fewer than 50 pixels count.
+/// normalised to sum to 1; false, leaving `h` zero, when fewer than 50 pixels count (sampled
+/// pixels stand for kStride x kStride each).
 bool addPartHistogram(const cv::Mat& bgr, cv::Rect region, const cv::Mat& depth, double objectDepth,
                       float* h) {
   region &= cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (region.area() < 50) return false;
-  cv::Mat hsv;
-  cv::cvtColor(bgr(region), hsv, cv::COLOR_BGR2HSV);  // H in [0, 180)
+  // Pixel (x, y) of `sampled` is pixel (kStride x, kStride y) of the region.
+  cv::Mat sampled((region.height + kStride - 1) / kStride, (region.width + kStride - 1) / kStride,
+                  CV_8UC3),
+      hsv;
+  for (int y = 0; y < sampled.rows; ++y) {
+    const cv::Vec3b* from = bgr.ptr<cv::Vec3b>(region.y + y * kStride) + region.x;
+    cv::Vec3b* to = sampled.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < sampled.cols; ++x) to[x] = from[x * kStride];
+  }
+  cv::cvtColor(sampled, hsv, cv::COLOR_BGR2HSV);  // H in [0, 180)
   int counted = 0;
   for (int y = 0; y < hsv.rows; ++y) {
     const cv::Vec3b* row = hsv.ptr<cv::Vec3b>(y);
-    const float* z = depth.empty() ? nullptr : depth.ptr<float>(region.y + y) + region.x;
+    const float* z = depth.empty() ? nullptr : depth.ptr<float>(region.y + y * kStride) + region.x;
     for (int x = 0; x < hsv.cols; ++x) {
-      if (z && !(std::abs(z[x] - objectDepth) < kAppearanceDepthBand)) continue;
+      if (z && !(std::abs(z[x * kStride] - objectDepth) < kAppearanceDepthBand)) continue;
       ++counted;
       const int hue = row[x][0], sat = row[x][1], val = row[x][2];
       if (val < 40 || sat < 40)
@@ -32,7 +47,7 @@ bool addPartHistogram(const cv::Mat& bgr, cv::Rect region, const cv::Mat& depth,
         ++h[std::min(15, hue * 16 / 180) * 4 + std::min(3, sat / 64)];
     }
   }
-  if (counted < 50) {
+  if (counted * kStride * kStride < 50) {
     std::fill(h, h + kPartBins, 0.0f);
     return false;
   }
