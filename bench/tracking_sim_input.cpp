@@ -9,7 +9,6 @@
 #include <dynslam/sim/Simulator.h>
 #include <dynslam/tracking/Appearance.h>
 #include <dynslam/tracking/DepthIoU.h>
-#include <dynslam/tracking/ObjectDepth.h>
 
 #include <unistd.h>
 #include <filesystem>
@@ -108,8 +107,7 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
     c.t = frame.t;
     for (size_t k = 0; k < frame.detections.size(); ++k) {
       const auto& d = frame.detections[k];
-      c.observations.push_back({d.box, tracking::measuredObjectDepth(frame, k), d.category, d.model,
-                                tracking::observationAppearance(frame, k)});
+      c.observations.push_back(tracking::observeDetection(frame, k, /*withAppearance=*/true));
       c.observation_truth.push_back(d.truth_id > 0 ? int(d.truth_id) : -1);
       for (const auto& o : sf.objects)
         if (o.id == d.truth_id) {

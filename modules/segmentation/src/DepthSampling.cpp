@@ -15,22 +15,7 @@ cv::Size gridShape(int count, double width, double height) {
 }
 
 int sampleGrid(const cv::Mat& depth, const cv::Rect2d& region, int count, std::vector<float>& out) {
-  const cv::Size grid = gridShape(count, region.width, region.height);
-  if (grid.area() == 0) return 0;
-  const double stepX = region.width / grid.width, stepY = region.height / grid.height;
-  for (int j = 0; j < grid.height; ++j) {
-    // Clamped so that rounding at the region's far edge can never leave the image.
-    const int v =
-        std::clamp(static_cast<int>(std::floor(region.y + (j + 0.5) * stepY)), 0, depth.rows - 1);
-    const float* row = depth.ptr<float>(v);
-    for (int i = 0; i < grid.width; ++i) {
-      const int u =
-          std::clamp(static_cast<int>(std::floor(region.x + (i + 0.5) * stepX)), 0, depth.cols - 1);
-      const float z = row[u];
-      if (z > 0 && std::isfinite(z)) out.push_back(z);
-    }
-  }
-  return grid.area();
+  return forEachGridPoint(depth, region, count, [&](cv::Point, float z) { out.push_back(z); });
 }
 
 double threeSigmaMean(const std::vector<float>& values) {

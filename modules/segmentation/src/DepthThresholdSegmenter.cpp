@@ -56,22 +56,6 @@ cv::Rect2d candidateBox(const cv::Rect& roi) {
   return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
 }
 
-// Calls `visit(point, depth)` for the valid-depth points of an even grid of about `count`
-// points over `region`.
-template <typename Visit>
-void forGridPoints(const cv::Mat& depth, const cv::Rect2d& region, int count, Visit visit) {
-  const cv::Size grid = gridShape(count, region.width, region.height);
-  const cv::Rect image(0, 0, depth.cols, depth.rows);
-  for (int r = 0; r < grid.height; ++r)
-    for (int c = 0; c < grid.width; ++c) {
-      const cv::Point p(static_cast<int>(region.x + (c + 0.5) * region.width / grid.width),
-                        static_cast<int>(region.y + (r + 0.5) * region.height / grid.height));
-      if (!image.contains(p)) continue;
-      const float z = depth.at<float>(p);
-      if (z > 0 && std::isfinite(z)) visit(p, z);
-    }
-}
-
 // Does the detection boxed `front` stand in front of the one boxed `back`, whose candidate
 // samples split into 2-means clusters `c`? On a flat floor the box reaching lower in the image
 // is the nearer one. People close to the camera are cut off by the image's bottom edge, though,
@@ -85,14 +69,14 @@ bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& 
   const int frontBottom = front.y + front.height, backBottom = back.y + back.height;
   if (frontBottom < depth.rows || backBottom < depth.rows) return frontBottom > backBottom;
   int nearSamples = 0, nearInside = 0;
-  forGridPoints(depth, candidateBox(back), samples, [&](cv::Point p, float z) {
+  forEachGridPoint(depth, candidateBox(back), samples, [&](cv::Point p, float z) {
     if (std::abs(z - c.near_mean) >= std::abs(z - c.far_mean)) return;
     ++nearSamples;
     nearInside += front.contains(p);
   });
   if (nearSamples == 0 || nearInside < 0.9 * nearSamples) return false;
   int outside = 0, onSurface = 0;
-  forGridPoints(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
+  forEachGridPoint(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
     if (back.contains(p)) return;
     ++outside;
     onSurface += std::abs(z - c.near_mean) < margin;

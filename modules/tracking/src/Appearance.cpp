@@ -81,10 +81,11 @@ cv::Mat bodyHistogram(const cv::Mat& bgr, const cv::Rect2f& box, const cv::Mat& 
   return hist;
 }
 
-cv::Mat observationAppearance(const core::Frame& frame, size_t detection) {
-  if (detection >= frame.detections.size()) return {};
-  return bodyHistogram(frame.rgb, frame.detections[detection].box, frame.depth,
-                       measuredObjectDepth(frame, detection));
+BoxObservation observeDetection(const core::Frame& frame, size_t detection, bool withAppearance) {
+  const core::Detection& d = frame.detections.at(detection);
+  const double depth = measuredObjectDepth(frame, detection);
+  return {d.box, depth, d.category, d.model,
+          withAppearance ? bodyHistogram(frame.rgb, d.box, frame.depth, depth) : cv::Mat()};
 }
 
 double appearanceDistance(const cv::Mat& a, const cv::Mat& b) {

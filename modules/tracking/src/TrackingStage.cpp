@@ -1,7 +1,6 @@
 #include "dynslam/tracking/TrackingStage.h"
 
 #include "dynslam/tracking/Appearance.h"
-#include "dynslam/tracking/ObjectDepth.h"
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -129,11 +128,8 @@ void TrackingStage::process(core::Frame& frame) {
     const bool usesAppearance = p.reid_max_distance > 0;
     std::vector<BoxObservation> observations;
     observations.reserve(frame.detections.size());
-    for (size_t i = 0; i < frame.detections.size(); ++i) {
-      const auto& d = frame.detections[i];
-      observations.push_back({d.box, measuredObjectDepth(frame, i), d.category, d.model,
-                              usesAppearance ? observationAppearance(frame, i) : cv::Mat()});
-    }
+    for (size_t i = 0; i < frame.detections.size(); ++i)
+      observations.push_back(observeDetection(frame, i, usesAppearance));
     const cv::Size image = !frame.rgb.empty() ? frame.rgb.size() : frame.depth.size();
     tracker_.update(observations, image);
   }

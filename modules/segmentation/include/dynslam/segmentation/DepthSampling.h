@@ -4,6 +4,8 @@
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace dynslam::segmentation {
@@ -13,6 +15,30 @@ namespace dynslam::segmentation {
 /// more rows than columns), so cols * rows is `count` up to rounding (64 over a 1:2.5 box:
 /// 5 x 13).
 cv::Size gridShape(int count, double width, double height);
+
+/// Calls `visit(cv::Point, float depth)` at the valid (> 0, finite) depths of `depth` (CV_32FC1,
+/// metres) at the centres of the cells of a gridShape(count, ...) grid over `region` (pixel x
+/// spanning [x, x + 1); points past the image's edge are clamped onto it); returns how many
+/// points the grid had.
+template <typename Visit>
+int forEachGridPoint(const cv::Mat& depth, const cv::Rect2d& region, int count, Visit visit) {
+  const cv::Size grid = gridShape(count, region.width, region.height);
+  if (grid.area() == 0) return 0;
+  const double stepX = region.width / grid.width, stepY = region.height / grid.height;
+  for (int j = 0; j < grid.height; ++j) {
+    // Clamped so that rounding at the region's far edge can never leave the image.
+    const int v =
+        std::clamp(static_cast<int>(std::floor(region.y + (j + 0.5) * stepY)), 0, depth.rows - 1);
+    const float* row = depth.ptr<float>(v);
+    for (int i = 0; i < grid.width; ++i) {
+      const int u =
+          std::clamp(static_cast<int>(std::floor(region.x + (i + 0.5) * stepX)), 0, depth.cols - 1);
+      const float z = row[u];
+      if (z > 0 && std::isfinite(z)) visit(cv::Point(u, v), z);
+    }
+  }
+  return grid.area();
+}
 
 /// Samples the depth image (CV_32FC1, metres, 0 = invalid) at the centres of the cells of a
 /// gridShape(count, ...) grid over `region` (pixel coordinates, pixel x spanning [x, x + 1);

@@ -40,9 +40,10 @@ enum class OverlapRule {
   /// (resolveByConnectivity); pixels no surface reaches fall back to closest_depth. A person's
   /// body slants and bends (turned shoulders, swinging arms, a leg stepping back), so its
   /// pixels are often nearer another person's d_t than its own; a surface is continuous where
-  /// two people are not. indoor_people_high (occluder_aware): mask IoU 0.734 -> 0.808, the
-  /// pixels lost to another object 22 % -> 10 % of the visible ones; 1.6 ms per frame
-  /// against 0.42 for closest_depth and 0.27 for nearer (bench-segmentation).
+  /// two people are not. indoor_people_high (occluder_aware, every person): mask IoU 0.775 ->
+  /// 0.831 against closest_depth, the pixels lost to another object 18 % -> 8 % of the visible
+  /// ones; 0.9-1.3 ms per frame against 0.38 for closest_depth and 0.31 for nearer
+  /// (bench-segmentation --min-visible 0, 2026-11-23).
   Connected
 };
 

@@ -20,6 +20,7 @@
 // 0.39; the torso alone without the band, its first form: p99 0.36 and p10 0.29, and IDF1 0.58
 // against 0.47 (reid 0.5, everything else equal).
 #include <dynslam/core/Frame.h>
+#include <dynslam/tracking/KalmanBoxTracker.h>
 
 #include <opencv2/core/mat.hpp>
 
@@ -31,9 +32,10 @@ namespace dynslam::tracking {
 cv::Mat bodyHistogram(const cv::Mat& bgr, const cv::Rect2f& box, const cv::Mat& depth = {},
                       double objectDepth = 0);
 
-/// The descriptor of frame.detections[detection] in frame.rgb, with frame.depth and the object
-/// depth the tracker uses (ObjectDepth.h).
-cv::Mat observationAppearance(const core::Frame& frame, size_t detection);
+/// What the tracker observes of frame.detections[detection]: its box, category and model, the
+/// object depth (ObjectDepth.h) and, when `withAppearance`, its descriptor in frame.rgb with
+/// frame.depth and that depth (the depth is measured once for both).
+BoxObservation observeDetection(const core::Frame& frame, size_t detection, bool withAppearance);
 
 /// Bhattacharyya distance of two descriptors, in [0, 1] (0 = identical); 1 when either is empty.
 double appearanceDistance(const cv::Mat& a, const cv::Mat& b);
