@@ -5,10 +5,10 @@
 //     (< 0.5) occlusion (paper Table 2: 1-5 %, "occlusion among the targets", so of people a
 //     detector still reports); true depth = median depth of the person's visible pixels (the
 //     surface the camera sees); the torso centre's z is shown beside it
+//   - segmentation time per frame, median: <= 1.2 ms with about 3 objects (paper Table 1)
 // Detections: the people and cars at least --min-visible visible (default: the share below which
 // the system's GroundTruthDetector reports nothing, 0.2, as a real detector misses a person
 // hidden that much); --min-visible 0 gives every object with a visible pixel a box.
-//   - segmentation time per frame, median: <= 1.2 ms with about 3 objects (paper Table 1)
 // Precision (mask pixels that are the person) and recall (the person's pixels in the mask)
 // tell over- from under-segmentation; "box as mask" is the IoU a mask filling the whole box
 // would score. --dump DIR writes the worst masks as images (green: right, red: not the person,

@@ -153,6 +153,9 @@ table10() {
 }
 growth() { awk -v l="$1" -v h="$2" 'BEGIN { if (l == "" || h == "" || l == 0) printf "-"; else printf "%+.1f %%", 100 * (h / l - 1) }'; }
 
+# The headline's scenarios: those of Tables 3-7, then the low-interaction variants.
+HEADLINE_SCENARIOS="market_crowd_high indoor_people_high outdoor_street_high augmented_7scenes indoor_people_low market_crowd_low outdoor_street_low"
+
 # headline: APE RMSE of the three variants per scenario of Tables 3-7 and η (the README quotes it).
 headline() {
   local sc f r n
@@ -160,7 +163,7 @@ headline() {
   echo
   echo "| scenario | ours (full) | Dynamic-VINS-like (remove) | VINS-Mono-like (none) | η vs remove | η vs none |"
   echo "|---|---|---|---|---|---|"
-  for sc in market_crowd_high indoor_people_high outdoor_street_high augmented_7scenes indoor_people_low market_crowd_low outdoor_street_low; do
+  for sc in $HEADLINE_SCENARIOS; do
     [ "$sc" = augmented_7scenes ] && [ "$HAVE_7SCENES" != 1 ] && { echo "| $sc | skipped: $SHARED/data/7scenes absent | | | | |"; continue; }
     f=$(value "$sc" full 6); r=$(value "$sc" remove 6); n=$(value "$sc" none 6)
     echo "| $sc | $(cell "$sc" full 6) | $(cell "$sc" remove 6) | $(cell "$sc" none 6) | $(eta "$f" "$r") | $(eta "$f" "$n") |"
@@ -177,7 +180,7 @@ headlineBars() {
   local sc v x tsv="$OUT/ape_bars.tsv"
   {
     printf 'scenario\tVINS-Mono-like (none)\tDynamic-VINS-like (remove)\tours (full)\n'
-    for sc in market_crowd_high indoor_people_high outdoor_street_high augmented_7scenes indoor_people_low market_crowd_low outdoor_street_low; do
+    for sc in $HEADLINE_SCENARIOS; do
       [ "$sc" = augmented_7scenes ] && [ "$HAVE_7SCENES" != 1 ] && continue
       printf '%s' "$sc"
       for v in none remove full; do x=$(value "$sc" "$v" 6); printf '\t%s' "${x:--}"; done
