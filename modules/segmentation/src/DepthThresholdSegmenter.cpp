@@ -60,8 +60,9 @@ cv::Rect2d candidateBox(const cv::Rect& roi) {
 // samples split into 2-means clusters `c`? On a flat floor the box reaching lower in the image
 // is the nearer one. People close to the camera are cut off by the image's bottom edge, though,
 // and then that says nothing. Then the near surface is `front`'s when (a) `back`'s near samples
-// lie inside `front`'s box (an occluder's pixels are inside its box; a person beside `back` at
-// the same depth shows also outside it), and (b) the surface also shows in `front`'s candidate
+// lie inside `front`'s box, and so does that surface wherever it shows in `back`'s whole box
+// (an occluder's pixels are inside its box; a person beside `back` at the same depth shows also
+// outside it), and (b) the surface also shows in `front`'s candidate
 // box outside `back`'s box (an occluder is larger than the part of it in front of `back`; a
 // person behind `back` shows there at its own, farther, depth).
 bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& back,
@@ -75,6 +76,15 @@ bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& 
     nearInside += front.contains(p);
   });
   if (nearSamples == 0 || nearInside < 0.9 * nearSamples) return false;
+  // The same over the whole of `back`'s box, where a person beside `back` whose box covers the
+  // candidate box still shows (95 %: the floor at the occluder's feet may reach its depth).
+  int nearInBox = 0, nearInFront = 0;
+  forEachGridPoint(depth, cv::Rect2d(back), samples, [&](cv::Point p, float z) {
+    if (std::abs(z - c.near_mean) >= margin) return;
+    ++nearInBox;
+    nearInFront += front.contains(p);
+  });
+  if (nearInBox == 0 || nearInFront < 0.95 * nearInBox) return false;
   int outside = 0, onSurface = 0;
   forEachGridPoint(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
     if (back.contains(p)) return;
@@ -84,17 +94,41 @@ bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& 
   return outside > 0 && onSurface >= 0.3 * outside;
 }
 
-// The clusters of a box whose near cluster `c.near_mean` is an occluder: what lies behind it
-// (the far cluster's samples, the last of `sorted`) may itself be the object in front of the
-// background, which the far cluster's mean would blur into one depth. The same rule as without
-// an occluder then picks the object: of two clusters more than `e` apart, the nearer.
-TwoMeansResult behindOccluder(const std::vector<float>& sorted, const TwoMeansResult& c, double e) {
-  std::vector<float> behind(sorted.end() - c.far_count, sorted.end());
+// Below this share of a candidate box's samples, the far cluster behind an occluder is stray
+// background between the occluder's limbs rather than the object: the occluder hides the whole
+// centre of the box, and the object shows only beside it (behindOccluder).
+constexpr double kFewBehind = 0.25;
+
+// The object's clusters in a box whose near cluster `c.near_mean` is an occluder boxed
+// `occluder`. When the far cluster holds enough of the candidate samples, they are what lies
+// behind the occluder, and may themselves be the object in front of the background, which the
+// far cluster's mean would blur into one depth: of two clusters more than `e` apart, the
+// nearer, as without an occluder. When the occluder hides nearly all of the candidate box, the
+// object is sought where it can show: m grid points over the whole box `roi` outside the
+// occluder's box and more than `margin` behind it, split by the same rule. (Tried: only the upper
+// 0.5-0.75 of the box, to keep the floor out, and the nearest compact run of depths rather
+// than 2-means: both worse on indoor_people_high.)
+TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi, const cv::Rect& occluder,
+                              const std::vector<float>& sorted, const TwoMeansResult& c,
+                              double margin, double e, int m) {
+  std::vector<float> behind;
+  if (c.far_count < kFewBehind * (c.near_count + c.far_count)) {
+    forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point p, float z) {
+      if (!occluder.contains(p) && z > c.near_mean + margin) behind.push_back(z);
+    });
+  }
+  const bool beside = behind.size() >= 4;  // else too little to tell the object from background
+  if (!beside) behind.assign(sorted.end() - c.far_count, sorted.end());
   const TwoMeansResult rest = twoMeans(behind);
-  if (!rest.two_clusters || rest.far_mean - rest.near_mean <= e) return c;
   TwoMeansResult out = c;
-  out.far_mean = rest.near_mean;
-  out.far_count = rest.near_count;
+  if (rest.two_clusters && rest.far_mean - rest.near_mean > e) {
+    out.far_mean = rest.near_mean;
+    out.far_count = rest.near_count;
+  } else if (beside) {
+    out.far_mean =
+        (rest.near_mean * rest.near_count + rest.far_mean * rest.far_count) / double(behind.size());
+    out.far_count = int(behind.size());
+  }
   return out;
 }
 
@@ -213,7 +247,7 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
         continue;
       if (!standsInFront(depth, rois[j], rois[i], c, ej / 2, params_.m)) continue;
       nearIsObject = false;
-      c = behindOccluder(samples[i], c, e);
+      c = behindOccluder(depth, rois[i], rois[j], samples[i], c, ej / 2, e, params_.m);
     }
     masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject));
   }

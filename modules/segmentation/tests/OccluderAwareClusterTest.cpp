@@ -119,3 +119,30 @@ TEST(OccluderAwareCluster, BehindAnOccluderThePersonIsNotBlurredWithTheWall) {
   EXPECT_NEAR(masks[1].d_t, 3.0, 1e-6) << "B";
   EXPECT_NEAR(masks[1].d_o, 1.0, 1e-6) << "A";
 }
+
+TEST(OccluderAwareCluster, AnOccluderHidingTheWholeCandidateBoxLeavesThePersonBesideIt) {
+  // A 1 m away covers all of B's candidate box but for a gap under its arm, where the wall
+  // shows; B, 2.5 m away, shows only beside A. The candidate's far cluster is that bit of wall;
+  // B's depth is found in B's box outside A's.
+  const Body a{{100, 0, 140, 240}, 100, 240, 1.0f}, b{{150, 40, 100, 200}, 150, 250, 2.5f};
+  cv::Mat depth = peopleCutOffAtTheBottom({b, a});
+  depth(cv::Rect(198, 100, 8, 40)).setTo(6.0f);  // under A's arm
+  const auto masks =
+      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  EXPECT_NEAR(masks[1].d_t, 2.5, 1e-6) << "B";
+  EXPECT_NEAR(masks[1].d_o, 1.0, 1e-6) << "A";
+  EXPECT_GT(cv::countNonZero(masks[1].mask), 0);
+}
+
+TEST(OccluderAwareCluster, APersonBesideWhoseBoxCoversTheCandidateBoxIsNoOccluder) {
+  // A and B side by side at 1.5 m, B's box covering A's candidate box and reaching outside A's;
+  // the wall shows between A's legs. A's own surface shows in A's box outside B's, so B does
+  // not hide A, and A is not taken for the wall.
+  const Body a{{120, 0, 80, 240}, 120, 200, 1.5f}, b{{140, 0, 120, 240}, 140, 260, 1.5f};
+  cv::Mat depth = peopleCutOffAtTheBottom({a, b});
+  depth(cv::Rect(157, 150, 6, 90)).setTo(6.0f);  // between A's legs
+  const auto masks =
+      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  EXPECT_NEAR(masks[0].d_t, 1.5, 1e-6) << "A";
+  EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
+}
