@@ -180,6 +180,7 @@ core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
   const cv::Rect2d box(out.roi);
   const double e = marginFor(detection);
   out.d_t = nearIsObject ? clusters.near_mean : clusters.far_mean;
+  if (clusters.two_clusters) out.d_alt = nearIsObject ? clusters.far_mean : clusters.near_mean;
 
   // Step 4: a near cluster more than e in front is an occluder; otherwise there is none
   // (d_o = 0, also when every sample had the same depth and 2-means found one cluster).

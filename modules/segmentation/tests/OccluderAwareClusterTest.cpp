@@ -44,10 +44,12 @@ TEST(OccluderAwareCluster, TheWallBetweenTheLegsIsNotThePerson) {
   const cv::Mat depth = walkerWithGap(box);
   const auto method = segmenter(ObjectCluster::Far).segment(depth, {person(box)});
   EXPECT_NEAR(method[0].d_t, 5.0, 1e-6) << "method.md's far cluster: the wall";
+  EXPECT_NEAR(method[0].d_alt, 2.0, 1e-6) << "the cluster not taken";
   const auto variant = segmenter(ObjectCluster::OccluderAware).segment(depth, {person(box)});
   ASSERT_TRUE(variant[0].valid);
   EXPECT_NEAR(variant[0].d_t, 2.0, 1e-6);
   EXPECT_EQ(variant[0].d_o, 0.0) << "no occluder";
+  EXPECT_NEAR(variant[0].d_alt, 5.0, 1e-6);
   EXPECT_GT(cv::countNonZero(variant[0].mask), 0.9 * (box.area() - 12 * 100));
 }
 

@@ -83,9 +83,14 @@ cv::Mat bodyHistogram(const cv::Mat& bgr, const cv::Rect2f& box, const cv::Mat& 
 
 BoxObservation observeDetection(const core::Frame& frame, size_t detection, bool withAppearance) {
   const core::Detection& d = frame.detections.at(detection);
-  const double depth = measuredObjectDepth(frame, detection);
-  return {d.box, depth, d.category, d.model,
-          withAppearance ? bodyHistogram(frame.rgb, d.box, frame.depth, depth) : cv::Mat()};
+  BoxObservation o;
+  o.box = d.box;
+  o.depth = measuredObjectDepth(frame, detection);
+  o.depth_alt = alternativeObjectDepth(frame, detection);
+  o.category = d.category;
+  o.model = d.model;
+  if (withAppearance) o.appearance = bodyHistogram(frame.rgb, d.box, frame.depth, o.depth);
+  return o;
 }
 
 double appearanceDistance(const cv::Mat& a, const cv::Mat& b) {

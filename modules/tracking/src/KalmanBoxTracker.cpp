@@ -77,6 +77,14 @@ void assignRound(const Tracks& tracked, const std::vector<BoxObservation>& obser
 
 }  // namespace
 
+double KalmanBoxTracker::depthFor(const Tracked& tr, const BoxObservation& o) const {
+  const double d = tr.filter.state()(kD);
+  if (!params_.alternative_depth || !(o.depth_alt > 0) || !(o.depth > 0) || !(d > 0))
+    return o.depth;
+  const auto ratio = [d](double z) { return std::min(z, d) / std::max(z, d); };
+  return ratio(o.depth_alt) > ratio(o.depth) ? o.depth_alt : o.depth;
+}
+
 void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations,
                                  const cv::Size& image, double threshold, bool coastingOnly,
                                  std::vector<int>& observationOf,
@@ -89,7 +97,7 @@ void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations
       [&](const Tracked& tr, const BoxObservation& o) {
         // Detectors clip their boxes to the image: compare like with like.
         const cv::Rect2f predicted = image.empty() ? tr.filter.box() : tr.filter.box() & frame;
-        const double value = depthIoU(predicted, tr.filter.state()(kD), o.box, o.depth);
+        const double value = depthIoU(predicted, tr.filter.state()(kD), o.box, depthFor(tr, o));
         return value > threshold ? value : 0.0;
       },
       observationOf, observationUsed);
@@ -112,8 +120,9 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
     const int j = observationOf[i];
     if (j >= 0) {
       const BoxObservation& o = observations[j];
-      BoxMeasurement z = boxMeasurement(o.box, o.depth);
-      if (!(o.depth > 0)) z(kD) = tr.filter.state()(kD);  // no depth: leave d as it is
+      const double depth = depthFor(tr, o);
+      BoxMeasurement z = boxMeasurement(o.box, depth);
+      if (!(depth > 0)) z(kD) = tr.filter.state()(kD);  // no depth: leave d as it is
       tr.filter.update(z, measurementNoise(params_.noise, z));
       if (params_.reset_at_border) restartCutComponents(tr.filter, o.box, z, image);
       tr.track.detection = j;

@@ -33,4 +33,10 @@ double measuredObjectDepth(const core::Frame& frame, size_t detection) {
   return medianDepthInCentralHalf(frame.depth, frame.detections[detection].box);
 }
 
+double alternativeObjectDepth(const core::Frame& frame, size_t detection) {
+  for (const auto& mask : frame.object_masks)
+    if (mask.detection == int(detection) && mask.valid) return mask.d_alt;
+  return 0.0;
+}
+
 }  // namespace dynslam::tracking

@@ -33,6 +33,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.reid_max_shift, "reid_max_shift");
   TRACKING_READ(double, t.appearance_memory, "appearance_memory");
   TRACKING_READ(double, t.reid_memory, "reid_memory");
+  TRACKING_READ(bool, t.alternative_depth, "alternative_depth");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -64,6 +65,8 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "weight of a track's colour histogram against a new detection's");
   TRACKING_WRITE(t.reid_memory, "reid_memory",
                  "s; with reid: a new track takes a lost or coasting track's id by colour");
+  TRACKING_WRITE(t.alternative_depth, "alternative_depth",
+                 "match by the nearer of the mask's two cluster depths (not the method)");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");

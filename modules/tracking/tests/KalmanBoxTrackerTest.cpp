@@ -112,6 +112,25 @@ TEST(TrackingKalmanBoxTracker, DepthDecidesAcceptanceAtRhoMin) {
   }
 }
 
+TEST(TrackingKalmanBoxTracker, AlternativeDepthMatchesWhenTheClusterChoiceFlips) {
+  // A person at 2 m whose segmentation takes the wall (5 m) for d_t on frame 3, its other
+  // cluster (d_alt) being the person: rho with d_t is 0.4, with d_alt about 1.
+  for (const bool alternative : {false, true}) {
+    KalmanBoxTrackerParams params;
+    params.min_hits = 1;
+    params.alternative_depth = alternative;
+    KalmanBoxTracker tracker(params);
+    for (int k = 0; k < 3; ++k) step(tracker, k, {person(100, 100, 60, 180, 2.0)});
+    BoxObservation flipped = person(100, 100, 60, 180, 5.0);
+    flipped.depth_alt = 2.05;
+    const auto tracks = step(tracker, 3, {flipped});
+    const core::Track* first = findId(tracks, 1);
+    ASSERT_NE(first, nullptr);
+    EXPECT_EQ(first->detection, alternative ? 0 : -1) << alternative;
+    if (alternative) EXPECT_NEAR(first->depth, 2.0, 0.06) << "updated by d_alt, not the wall";
+  }
+}
+
 TEST(TrackingKalmanBoxTracker, AGoodPairIsNotLostToTwoWeakOnes) {
   // Stationary tracks A (y 0..100) and B (y -80..20). Detection 1 (y -30..100) has rho 0.77
   // with A and 0.28 with B; detection 2 (y 10..140) has 0.64 with A and 0.05 with B. Maximising

@@ -32,6 +32,10 @@ struct ObjectMask {
   double d_t = 0;      ///< object depth, m (far cluster of the candidate box)
   double d_o = 0;      ///< occluder depth, m (near cluster); 0 when no occluder was found
   double d_b = 0;      ///< background depth, m (upper half of the box, three-sigma filtered)
+  /// The candidate box's other 2-means cluster, m: the depth the object would have had if the
+  /// cluster choice had gone the other way; 0 when the samples formed one cluster. A tracker
+  /// may compare a track's depth with it too (Tracking.alternative_depth).
+  double d_alt = 0;
   double t_min = 0, t_max = 0;  ///< depth thresholds, m: mask = depth in [t_min, t_max]
   bool valid = false;  ///< false: too little valid depth to segment (empty mask, depths 0)
 };

@@ -71,6 +71,12 @@ struct KalmanBoxTrackerParams {
   /// reid_max_distance, wherever it is: the person came back after the prediction had drifted
   /// off (people turn while hidden) or out of the image. 0: no memory.
   double reid_memory = 0.0;
+  /// Not the method: a detection whose segmentation had two clusters matches a track by
+  /// whichever of the two depths (d_t, d_alt) gives the larger depth IoU, and updates the
+  /// track's depth with that one. The cluster choice of a partly hidden person flips between
+  /// the person, the occluder and the wall from frame to frame; the track's depth says which
+  /// is the person. A new track starts from d_t.
+  bool alternative_depth = false;
   /// Weight of the track's descriptor when a matched detection updates it (running average).
   double appearance_memory = 0.8;
   BoxNoiseParams noise;
@@ -83,6 +89,9 @@ struct BoxObservation {
   std::string category;
   core::MotionModel model = core::MotionModel::NonRigid;
   cv::Mat appearance = {};  ///< Appearance.h descriptor; empty when not computed
+  /// Another depth the object may have (core::ObjectMask::d_alt), m; 0 = none. Used only with
+  /// KalmanBoxTrackerParams::alternative_depth.
+  double depth_alt = 0;
 };
 
 class KalmanBoxTracker {
@@ -118,6 +127,9 @@ class KalmanBoxTracker {
     cv::Mat appearance = {};  // running average of the matched detections' descriptors
   };
 
+  /// The depth of `o` that `tr` is compared with and updated by: o.depth, or with
+  /// alternative_depth the one of o.depth and o.depth_alt nearer (in ratio) the track's depth.
+  double depthFor(const Tracked& tr, const BoxObservation& o) const;
   /// One assignment round: the tracks without an observation yet (only those already coasting
   /// when `coastingOnly`) against the observations not used yet, by the Hungarian algorithm on
   /// the depth IoU, pairs accepted when rho > threshold. Predicted boxes are clipped to `image`

@@ -18,4 +18,7 @@ double medianDepthInCentralHalf(const cv::Mat& depth, const cv::Rect2f& box);
 /// medianDepthInCentralHalf(frame.depth, box); 0 (unknown) when neither gives one.
 double measuredObjectDepth(const core::Frame& frame, size_t detection);
 
+/// The d_alt of a valid frame.object_masks entry for frame.detections[detection]; 0 when none.
+double alternativeObjectDepth(const core::Frame& frame, size_t detection);
+
 }  // namespace dynslam::tracking
