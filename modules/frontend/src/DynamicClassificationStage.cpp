@@ -22,6 +22,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
   p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
+  p.background_outside_boxes =
+      c.read_bool(s, "background_outside_boxes", p.background_outside_boxes);
   p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
   p.rigid.ransac.sample_size = c.read_int(s, "rigid_sample_size", p.rigid.ransac.sample_size);
   p.rigid.ransac.inlier_threshold =
@@ -54,6 +56,8 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "features with flow an object needs for a speed; fewer: last decision kept");
   core::writeKey(c, s, "depth_window", p.depth_window,
         "px; a feature's 3-D point uses the robust median depth of this window (1: its pixel)");
+  core::writeKey(c, s, "background_outside_boxes", p.background_outside_boxes,
+                 "camera translation from features outside every box, not just every mask");
   core::writeKey(c, s, "rigid_iterations", p.rigid.ransac.iterations,
         "RANSAC hypotheses of the rigid point sets (method.md: 100)");
   core::writeKey(c, s, "rigid_sample_size", p.rigid.ransac.sample_size,

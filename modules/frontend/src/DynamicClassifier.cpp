@@ -88,7 +88,16 @@ void DynamicClassifier::process(core::Frame& frame) {
     double speed = -1;  ///< |scene flow| / time over the window, m/s; < 0: not measured
   };
   std::vector<Current> cur(frame.features.size());
-  std::vector<Eigen::Vector3d> bgPrev, bgCur;
+  std::vector<Eigen::Vector3d> bgPrev, bgCur;  // pairs outside every mask
+  std::vector<char> boxed;                     // ... of which inside some box
+  const auto inAnyBox = [&frame](const cv::Point2f& pixel) {
+    const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
+    for (const auto& m : frame.object_masks)
+      if (m.roi.contains(px)) return true;
+    for (const auto& t : frame.tracks)
+      if (t.box.contains(pixel)) return true;
+    return false;
+  };
   std::map<int, const core::Track*> tracks;
   for (const auto& t : frame.tracks) tracks[t.id] = &t;
   std::map<int, ObjectRegion> maskless;  // tracks seen this frame without a mask
@@ -133,6 +142,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     if (!c.region && c.previous) {
       bgPrev.push_back(c.previous->P);
       bgCur.push_back(c.P);
+      boxed.push_back(params_.background_outside_boxes && inAnyBox(f.pixel));
     }
   }
   counts_.features += frame.features.size();
@@ -141,6 +151,16 @@ void DynamicClassifier::process(core::Frame& frame) {
   if (prevT_) {
     const auto gyro = gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu,
                                          frame.T_body_camera);
+    if (std::count(boxed.begin(), boxed.end(), 0) >= params_.camera.min_inliers) {
+      size_t w = 0;
+      for (size_t i = 0; i < boxed.size(); ++i)
+        if (!boxed[i]) {
+          bgPrev[w] = bgPrev[i];
+          bgCur[w++] = bgCur[i];
+        }
+      bgPrev.resize(w);
+      bgCur.resize(w);
+    }
     camera_ = cameraEstimator_.estimate(bgPrev, bgCur, gyro, prevPose_, frame.T_world_camera);
     ++counts_.camera_sources[camera_.source];
     odometry_.emplace_back(now, odometry_.back().second * camera_.motion.isometry().inverse());

@@ -245,6 +245,33 @@ TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
   EXPECT_EQ(still.first, still.second) << "still: Static";
 }
 
+// The walker's mask misses the right half of its box, as masks miss a tenth of a walker's
+// pixels: those features are outside every mask but inside the walker's box. Registered on
+// them too, the camera's translation takes some of the walker's motion; registered on the
+// features outside every box (the default) it stays exact.
+TEST(DynamicClassifier, TheCameraMotionIgnoresFeaturesInsideBoxesButOutsideMasks) {
+  auto worstError = [](bool outsideBoxes) {
+    const Scene scene;
+    DynamicClassifierParams params;
+    params.background_outside_boxes = outsideBoxes;
+    DynamicClassifier classifier(params);
+    double worst = 0;
+    for (int k = 0; k < 15; ++k) {
+      core::Frame f = scene.frame(k);
+      cv::Mat& walker = f.object_masks[0].mask;
+      walker.colRange(walker.cols / 2, walker.cols).setTo(0);
+      classifier.process(f);
+      if (k == 0) continue;
+      const Eigen::Isometry3d truth = cameraPose(f.t).inverse() * cameraPose(f.t - kDt);
+      worst =
+          std::max(worst, (classifier.lastCameraMotion().motion.t - truth.translation()).norm());
+    }
+    return worst;
+  };
+  EXPECT_LT(worstError(true), 1e-6);
+  EXPECT_GT(worstError(false), 1e-3) << "the walker's features outvote the far background";
+}
+
 TEST(DynamicClassifier, TheMethodsFrameToFrameSettingsAgreeOnCleanData) {
   const Scene scene;
   DynamicClassifierParams params;
