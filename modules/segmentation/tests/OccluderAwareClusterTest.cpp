@@ -83,6 +83,11 @@ cv::Mat peopleCutOffAtTheBottom(const std::vector<Body>& people) {
   return depth;
 }
 
+/// occluder_aware masks of the two people `a` and `b`, in that order.
+std::vector<core::ObjectMask> segmentPair(const cv::Mat& depth, const Body& a, const Body& b) {
+  return segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+}
+
 }  // namespace
 
 TEST(OccluderAwareCluster, APersonInFrontIsTheOccluderAlsoWhenBothAreCutOffAtTheBottom) {
@@ -90,8 +95,7 @@ TEST(OccluderAwareCluster, APersonInFrontIsTheOccluderAlsoWhenBothAreCutOffAtThe
   // front; A's surface continues outside B's box and B's near samples all lie in A's box.
   const Body a{{60, 0, 120, 240}, 60, 180, 1.2f}, b{{140, 40, 80, 200}, 140, 220, 2.5f};
   const cv::Mat depth = peopleCutOffAtTheBottom({b, a});
-  const auto masks =
-      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  const auto masks = segmentPair(depth, a, b);
   EXPECT_NEAR(masks[0].d_t, 1.2, 1e-6) << "A";
   EXPECT_NEAR(masks[1].d_t, 2.5, 1e-6) << "B, behind A";
   EXPECT_NEAR(masks[1].d_o, 1.2, 1e-6);
@@ -104,8 +108,7 @@ TEST(OccluderAwareCluster, PeopleSideBySideAtOneDepthKeepTheirOwnDepth) {
   const Body a{{40, 0, 100, 240}, 50, 110, 1.5f}, b{{100, 0, 100, 240}, 150, 190, 1.5f};
   cv::Mat depth = peopleCutOffAtTheBottom({a, b});
   depth(cv::Rect(75, 120, 10, 120)).setTo(6.0f);  // between A's legs
-  const auto masks =
-      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  const auto masks = segmentPair(depth, a, b);
   EXPECT_NEAR(masks[0].d_t, 1.5, 1e-6) << "A";
   EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
 }
@@ -116,8 +119,7 @@ TEST(OccluderAwareCluster, BehindAnOccluderThePersonIsNotBlurredWithTheWall) {
   const Body a{{60, 0, 120, 240}, 60, 180, 1.0f}, b{{140, 40, 80, 200}, 185, 215, 3.0f};
   cv::Mat depth = peopleCutOffAtTheBottom({b, a});
   depth.setTo(4.2f, depth == 6.0f);
-  const auto masks =
-      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  const auto masks = segmentPair(depth, a, b);
   EXPECT_NEAR(masks[1].d_t, 3.0, 1e-6) << "B";
   EXPECT_NEAR(masks[1].d_o, 1.0, 1e-6) << "A";
 }
@@ -129,8 +131,7 @@ TEST(OccluderAwareCluster, AnOccluderHidingTheWholeCandidateBoxLeavesThePersonBe
   const Body a{{100, 0, 140, 240}, 100, 240, 1.0f}, b{{150, 40, 100, 200}, 150, 250, 2.5f};
   cv::Mat depth = peopleCutOffAtTheBottom({b, a});
   depth(cv::Rect(198, 100, 8, 40)).setTo(6.0f);  // under A's arm
-  const auto masks =
-      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  const auto masks = segmentPair(depth, a, b);
   EXPECT_NEAR(masks[1].d_t, 2.5, 1e-6) << "B";
   EXPECT_NEAR(masks[1].d_o, 1.0, 1e-6) << "A";
   EXPECT_GT(cv::countNonZero(masks[1].mask), 0);
@@ -143,8 +144,7 @@ TEST(OccluderAwareCluster, APersonBesideWhoseBoxCoversTheCandidateBoxIsNoOcclude
   const Body a{{120, 0, 80, 240}, 120, 200, 1.5f}, b{{140, 0, 120, 240}, 140, 260, 1.5f};
   cv::Mat depth = peopleCutOffAtTheBottom({a, b});
   depth(cv::Rect(157, 150, 6, 90)).setTo(6.0f);  // between A's legs
-  const auto masks =
-      segmenter(ObjectCluster::OccluderAware).segment(depth, {person(a.box), person(b.box)});
+  const auto masks = segmentPair(depth, a, b);
   EXPECT_NEAR(masks[0].d_t, 1.5, 1e-6) << "A";
   EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
 }
