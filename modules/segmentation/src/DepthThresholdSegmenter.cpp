@@ -204,15 +204,37 @@ core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
   return out;
 }
 
+namespace {
+
+// The cluster choice a depth expected for the object makes: near when its mean is nearer that
+// depth in ratio. `expected` <= 0 or one cluster: `rule`, the choice without it.
+bool nearIsExpected(const TwoMeansResult& c, double expected, bool rule) {
+  if (!(expected > 0) || !c.two_clusters || !(c.near_mean > 0)) return rule;
+  const auto ratio = [expected](double z) { return std::min(z, expected) / std::max(z, expected); };
+  return ratio(c.near_mean) > ratio(c.far_mean);
+}
+
+}  // namespace
+
 std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
-    const cv::Mat& depth, const std::vector<core::Detection>& detections) const {
+    const cv::Mat& depth, const std::vector<core::Detection>& detections,
+    const std::vector<double>& expectedDepth) const {
+  const auto expected = [&](size_t i) { return i < expectedDepth.size() ? expectedDepth[i] : 0.0; };
   if (depth.type() != CV_32FC1 && !detections.empty())
     throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
   std::vector<core::ObjectMask> masks;
   masks.reserve(detections.size());
   if (params_.object_cluster != ObjectCluster::OccluderAware) {
-    for (size_t i = 0; i < detections.size(); ++i)
-      masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
+    for (size_t i = 0; i < detections.size(); ++i) {
+      TwoMeansResult c;
+      std::vector<float> samples;
+      const cv::Rect roi = pixelRoi(detections[i].box, depth.size());
+      if (expected(i) > 0 && candidateClusters(depth, roi, c, samples))
+        masks.push_back(
+            segmentWith(depth, detections[i], int(i), c, nearIsExpected(c, expected(i), false)));
+      else
+        masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
+    }
     resolveOverlaps(masks, depth);
     return masks;
   }
@@ -250,7 +272,8 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
       nearIsObject = false;
       c = behindOccluder(depth, rois[i], rois[j], samples[i], c, ej / 2, e, params_.m);
     }
-    masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject));
+    masks.push_back(
+        segmentWith(depth, detections[i], int(i), c, nearIsExpected(c, expected(i), nearIsObject)));
   }
   resolveOverlaps(masks, depth);
   return masks;

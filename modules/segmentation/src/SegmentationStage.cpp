@@ -17,7 +17,8 @@ constexpr core::Keyword<OverlapRule> kOverlapRules[] = {
     {"connected", OverlapRule::Connected}};
 constexpr core::Keyword<SegmentedBoxes> kBoxes[] = {
     {"detections", SegmentedBoxes::Detections},
-    {"predicted_tracks", SegmentedBoxes::PredictedTracks}};
+    {"predicted_tracks", SegmentedBoxes::PredictedTracks},
+    {"tracked_detections", SegmentedBoxes::TrackedDetections}};
 
 }  // namespace
 
@@ -60,7 +61,9 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(
       c, s, "boxes", std::string(core::wordOf(boxes, kBoxes)),
       "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "
-      "tracks no detection took this frame (list the stage again after Tracking)");
+      "tracks no detection took this frame (list the stage again after Tracking); "
+      "tracked_detections: the detections again, each object cluster chosen by its track's "
+      "depth (after Tracking; not the method)");
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
@@ -99,9 +102,33 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
   frame.object_masks.insert(frame.object_masks.end(), masks.begin(), masks.end());
 }
 
+void SegmentationStage::segmentTrackedDetections(core::Frame& frame) const {
+  if (frame.detections.empty()) return;
+  if (frame.depth.empty())
+    throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
+                             " has detections but no depth image");
+  std::vector<double> expected(frame.detections.size(), 0.0);
+  std::vector<int> trackOf(frame.detections.size(), -1);
+  for (size_t k = 0; k < frame.tracks.size(); ++k) {
+    const int d = frame.tracks[k].detection;
+    if (d >= 0 && size_t(d) < expected.size()) {
+      expected[size_t(d)] = frame.tracks[k].depth;
+      trackOf[size_t(d)] = int(k);
+    }
+  }
+  auto masks = segmenter_.segment(frame.depth, frame.detections, expected);
+  for (size_t i = 0; i < masks.size(); ++i) masks[i].track = trackOf[i];
+  // The detections' masks are replaced; masks of predicted boxes (detection -1) stay.
+  for (const auto& m : frame.object_masks)
+    if (m.detection < 0) masks.push_back(m);
+  frame.object_masks = std::move(masks);
+}
+
 void SegmentationStage::process(core::Frame& frame) {
   if (options_.boxes == SegmentedBoxes::PredictedTracks) {
     segmentPredictedTracks(frame);
+  } else if (options_.boxes == SegmentedBoxes::TrackedDetections) {
+    segmentTrackedDetections(frame);
   } else {
     if (frame.depth.empty() && !frame.detections.empty())
       throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +

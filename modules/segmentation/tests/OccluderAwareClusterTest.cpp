@@ -53,6 +53,16 @@ TEST(OccluderAwareCluster, TheWallBetweenTheLegsIsNotThePerson) {
   EXPECT_GT(cv::countNonZero(variant[0].mask), 0.9 * (box.area() - 12 * 100));
 }
 
+TEST(OccluderAwareCluster, AnExpectedDepthChoosesTheCluster) {
+  // segment's expectedDepth (a track's depth) overrides both rules' choice of cluster.
+  const cv::Rect box(100, 20, 60, 200);
+  const cv::Mat depth = walkerWithGap(box);
+  for (const auto c : {ObjectCluster::Far, ObjectCluster::OccluderAware}) {
+    EXPECT_NEAR(segmenter(c).segment(depth, {person(box)}, {2.2})[0].d_t, 2.0, 1e-6);
+    EXPECT_NEAR(segmenter(c).segment(depth, {person(box)}, {4.0})[0].d_t, 5.0, 1e-6);
+  }
+}
+
 TEST(OccluderAwareCluster, APersonStandingInFrontIsStillTheOccluder) {
   // B 4 m away (box bottom at y 180) half hidden by A 2 m away (box bottom at y 230, nearer on
   // the floor); wall at 7 m.

@@ -77,3 +77,31 @@ TEST(SegmentationStage, WritesOneMaskPerDetectionInOrder) {
   stage.process(noDepth);
   EXPECT_TRUE(noDepth.object_masks.empty());
 }
+
+TEST(SegmentationStage, TrackedDetectionsTakeTheClusterOfTheirTracksDepth) {
+  // A walker 2 m away with the wall (5 m) between its legs: occluder_aware takes the walker.
+  // A track that took the detection at 5 m (Tracking.alternative_depth) makes the mask the
+  // wall's; a track at 2.1 m keeps the walker's; the masks keep their tracks.
+  core::Frame frame;
+  frame.depth = cv::Mat(240, 320, CV_32FC1, cv::Scalar(5.0f));
+  const cv::Rect box(100, 20, 60, 200);
+  frame.depth(box).setTo(2.0f);
+  frame.depth(cv::Rect(124, 120, 12, 100)).setTo(5.0f);
+  frame.detections.resize(1);
+  frame.detections[0].box = cv::Rect2f(box);
+  frame.detections[0].category = "person";
+  frame.tracks.resize(2);
+  frame.tracks[1].detection = 0;
+  segmentation::SegmentationStage stage;
+  stage.configure(core::IniConfig::fromText("[R]\nboxes = tracked_detections\n"
+                                            "object_cluster = occluder_aware\n"),
+                  "R");
+  for (const auto& [trackDepth, expected] : {std::pair{5.0, 5.0}, std::pair{2.1, 2.0}}) {
+    frame.tracks[1].depth = trackDepth;
+    frame.object_masks.clear();
+    stage.process(frame);
+    ASSERT_EQ(frame.object_masks.size(), 1u);
+    EXPECT_NEAR(frame.object_masks[0].d_t, expected, 1e-6) << trackDepth;
+    EXPECT_EQ(frame.object_masks[0].track, 1);
+  }
+}

@@ -82,8 +82,12 @@ class DepthThresholdSegmenter {
 
   /// One ObjectMask per detection, same order, mutual occlusion resolved (and, with
   /// OccluderAware, the object cluster chosen with the other detections in view).
+  /// `expectedDepth` (empty, or one per detection; <= 0: none), not the method: where given,
+  /// of a box's two clusters the one nearer (in ratio) that depth is the object, whatever the
+  /// rule above says (a track's depth: SegmentationStage's boxes = tracked_detections).
   std::vector<core::ObjectMask> segment(const cv::Mat& depth,
-                                        const std::vector<core::Detection>& detections) const;
+                                        const std::vector<core::Detection>& detections,
+                                        const std::vector<double>& expectedDepth = {}) const;
 
  private:
   /// Steps 1-3 for one box: the 2-means of its candidate box, or nothing without enough depth.

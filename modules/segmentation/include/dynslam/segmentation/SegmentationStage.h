@@ -12,6 +12,11 @@
 //    missed, while their tracks coast. A pipeline therefore lists the class twice:
 //      stages = Detection, Segmentation, Tracking, Segmentation:PredictedBoxes
 //    with [PredictedBoxes] boxes = predicted_tracks.
+//  - tracked_detections (not the method): runs after the tracking stage and segments the
+//    frame's detections again, each box's object cluster chosen by the depth of the track that
+//    took it (DepthThresholdSegmenter::segment's expectedDepth); the masks keep their tracks.
+//    With Tracking.alternative_depth a track may take a detection by the cluster the
+//    segmentation did not choose; this makes the mask follow the track.
 #include <dynslam/core/Stage.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 
@@ -22,7 +27,7 @@
 namespace dynslam::segmentation {
 
 /// Which boxes the stage segments (see the file comment).
-enum class SegmentedBoxes { Detections, PredictedTracks };
+enum class SegmentedBoxes { Detections, PredictedTracks, TrackedDetections };
 
 struct SegmentationOptions : mrpt::config::CLoadableOptions {
   DepthThresholdParams params;
@@ -46,6 +51,7 @@ class SegmentationStage : public core::Stage {
   size_t frames_ = 0, masks_ = 0, invalid_ = 0;
 
   void segmentPredictedTracks(core::Frame& frame) const;
+  void segmentTrackedDetections(core::Frame& frame) const;
 };
 
 }  // namespace dynslam::segmentation
