@@ -164,7 +164,7 @@ timing() {
   # shellcheck disable=SC2046
   "$BIN/dynslam" --config "$T/sim_vio_yolox_realtime.ini" --rawlog "$S/sim.rawlog" --out "$T/rt" \
     --quiet --no-map --realtime $(variantSettings full) \
-    --set "pipeline.stages=Detection Segmentation Tracking Segmentation:PredictedBoxes FeatureTracking DynamicClassification Estimator" \
+    --set "pipeline.stages=Detection Segmentation Tracking Segmentation:Retrack Segmentation:PredictedBoxes FeatureTracking DynamicClassification Estimator" \
     > "$T/rt.log" 2>&1 || true
 }
 
