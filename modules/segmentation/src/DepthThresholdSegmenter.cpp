@@ -132,6 +132,13 @@ TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi, const c
   return out;
 }
 
+// The cluster choice a depth expected for the object makes: near when its mean is nearer that
+// depth in ratio. `expected` <= 0 or one cluster: `rule`, the choice without it.
+bool nearIsExpected(const TwoMeansResult& c, double expected, bool rule) {
+  if (!(expected > 0) || !c.two_clusters || !(c.near_mean > 0)) return rule;
+  return core::depthRatio(c.near_mean, expected) > core::depthRatio(c.far_mean, expected);
+}
+
 }  // namespace
 
 bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::Rect& roi,
@@ -151,7 +158,8 @@ bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::
 
 core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
                                                      const core::Detection& detection,
-                                                     int detectionIndex) const {
+                                                     int detectionIndex,
+                                                     double expectedDepth) const {
   if (depth.type() != CV_32FC1)
     throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
   core::ObjectMask out;
@@ -166,7 +174,8 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
   else if (params_.object_cluster == ObjectCluster::OccluderAware)  // no other box: no occluder
     nearIsObject = clusters.two_clusters &&
                    clusters.far_mean - clusters.near_mean > marginFor(detection);
-  return segmentWith(depth, detection, detectionIndex, clusters, nearIsObject);
+  return segmentWith(depth, detection, detectionIndex, clusters,
+                     nearIsExpected(clusters, expectedDepth, nearIsObject));
 }
 
 core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
@@ -204,18 +213,6 @@ core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
   return out;
 }
 
-namespace {
-
-// The cluster choice a depth expected for the object makes: near when its mean is nearer that
-// depth in ratio. `expected` <= 0 or one cluster: `rule`, the choice without it.
-bool nearIsExpected(const TwoMeansResult& c, double expected, bool rule) {
-  if (!(expected > 0) || !c.two_clusters || !(c.near_mean > 0)) return rule;
-  const auto ratio = [expected](double z) { return std::min(z, expected) / std::max(z, expected); };
-  return ratio(c.near_mean) > ratio(c.far_mean);
-}
-
-}  // namespace
-
 std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     const cv::Mat& depth, const std::vector<core::Detection>& detections,
     const std::vector<double>& expectedDepth) const {
@@ -225,16 +222,8 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
   std::vector<core::ObjectMask> masks;
   masks.reserve(detections.size());
   if (params_.object_cluster != ObjectCluster::OccluderAware) {
-    for (size_t i = 0; i < detections.size(); ++i) {
-      TwoMeansResult c;
-      std::vector<float> samples;
-      const cv::Rect roi = pixelRoi(detections[i].box, depth.size());
-      if (expected(i) > 0 && candidateClusters(depth, roi, c, samples))
-        masks.push_back(
-            segmentWith(depth, detections[i], int(i), c, nearIsExpected(c, expected(i), false)));
-      else
-        masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i)));
-    }
+    for (size_t i = 0; i < detections.size(); ++i)
+      masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i), expected(i)));
     resolveOverlaps(masks, depth);
     return masks;
   }

@@ -20,6 +20,13 @@ constexpr core::Keyword<SegmentedBoxes> kBoxes[] = {
     {"predicted_tracks", SegmentedBoxes::PredictedTracks},
     {"tracked_detections", SegmentedBoxes::TrackedDetections}};
 
+// Boxes to segment need the frame's depth image: else an error naming the frame.
+void requireDepth(const core::Frame& frame, size_t boxes, const char* what) {
+  if (frame.depth.empty() && boxes > 0)
+    throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) + " has " + what +
+                             " but no depth image");
+}
+
 }  // namespace
 
 void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
@@ -90,9 +97,7 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
     boxes.push_back(box);
     trackOf.push_back(int(i));
   }
-  if (frame.depth.empty() && !boxes.empty())
-    throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
-                             " has predicted boxes but no depth image");
+  requireDepth(frame, boxes.size(), "predicted boxes");
   auto masks = segmenter_.segment(frame.depth, boxes);
   for (size_t k = 0; k < masks.size(); ++k) {
     masks[k].detection = -1;
@@ -104,9 +109,7 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
 
 void SegmentationStage::segmentTrackedDetections(core::Frame& frame) const {
   if (frame.detections.empty()) return;
-  if (frame.depth.empty())
-    throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
-                             " has detections but no depth image");
+  requireDepth(frame, frame.detections.size(), "detections");
   std::vector<double> expected(frame.detections.size(), 0.0);
   std::vector<int> trackOf(frame.detections.size(), -1);
   for (size_t k = 0; k < frame.tracks.size(); ++k) {
@@ -130,9 +133,7 @@ void SegmentationStage::process(core::Frame& frame) {
   } else if (options_.boxes == SegmentedBoxes::TrackedDetections) {
     segmentTrackedDetections(frame);
   } else {
-    if (frame.depth.empty() && !frame.detections.empty())
-      throw std::runtime_error("Segmentation: frame " + std::to_string(frame.index) +
-                               " has detections but no depth image");
+    requireDepth(frame, frame.detections.size(), "detections");
     frame.object_masks = segmenter_.segment(frame.depth, frame.detections);
   }
   ++frames_;

@@ -1,6 +1,6 @@
 #include "dynslam/tracking/DepthIoU.h"
 
-#include <algorithm>
+#include <dynslam/core/Perception.h>
 
 namespace dynslam::tracking {
 
@@ -13,7 +13,7 @@ double boxIoU(const cv::Rect2f& a, const cv::Rect2f& b) {
 double depthIoU(const cv::Rect2f& a, double depthA, const cv::Rect2f& b, double depthB) {
   const double iou = boxIoU(a, b);
   if (!(depthA > 0 && depthB > 0)) return iou;
-  return iou * std::min(depthA, depthB) / std::max(depthA, depthB);
+  return iou * core::depthRatio(depthA, depthB);
 }
 
 }  // namespace dynslam::tracking

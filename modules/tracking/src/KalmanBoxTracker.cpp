@@ -81,8 +81,7 @@ double KalmanBoxTracker::depthFor(const Tracked& tr, const BoxObservation& o) co
   const double d = tr.filter.state()(kD);
   if (!params_.alternative_depth || !(o.depth_alt > 0) || !(o.depth > 0) || !(d > 0))
     return o.depth;
-  const auto ratio = [d](double z) { return std::min(z, d) / std::max(z, d); };
-  return ratio(o.depth_alt) > ratio(o.depth) ? o.depth_alt : o.depth;
+  return core::depthRatio(o.depth_alt, d) > core::depthRatio(o.depth, d) ? o.depth_alt : o.depth;
 }
 
 void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations,

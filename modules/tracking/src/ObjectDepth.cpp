@@ -26,17 +26,26 @@ double medianDepthInCentralHalf(const cv::Mat& depth, const cv::Rect2f& box) {
   return *middle;
 }
 
-double measuredObjectDepth(const core::Frame& frame, size_t detection) {
+namespace {
+
+// The valid mask the segmentation made for frame.detections[detection]; nullptr when none.
+const core::ObjectMask* validMaskOf(const core::Frame& frame, size_t detection) {
   for (const auto& mask : frame.object_masks)
-    if (mask.detection == int(detection) && mask.valid && mask.d_t > 0) return mask.d_t;
+    if (mask.detection == int(detection) && mask.valid) return &mask;
+  return nullptr;
+}
+
+}  // namespace
+
+double measuredObjectDepth(const core::Frame& frame, size_t detection) {
+  if (const auto* mask = validMaskOf(frame, detection); mask && mask->d_t > 0) return mask->d_t;
   if (detection >= frame.detections.size()) return 0.0;
   return medianDepthInCentralHalf(frame.depth, frame.detections[detection].box);
 }
 
 double alternativeObjectDepth(const core::Frame& frame, size_t detection) {
-  for (const auto& mask : frame.object_masks)
-    if (mask.detection == int(detection) && mask.valid) return mask.d_alt;
-  return 0.0;
+  const auto* mask = validMaskOf(frame, detection);
+  return mask ? mask->d_alt : 0.0;
 }
 
 }  // namespace dynslam::tracking

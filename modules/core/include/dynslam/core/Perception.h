@@ -4,9 +4,15 @@
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>
 
+#include <algorithm>
 #include <string>
 
 namespace dynslam::core {
+
+/// min(a, b) / max(a, b) of two depths > 0: 1 when they agree, towards 0 as one is a multiple of
+/// the other. The depth factor of method.md's depth IoU (section 2), and how the segmentation and
+/// the tracker tell which of two depths is nearer an expected one.
+inline double depthRatio(double a, double b) { return std::min(a, b) / std::max(a, b); }
 
 /// How the method models an object's motion (method.md section 1: person non-rigid, car rigid
 /// by default; the detector's class map in the ini decides per class).

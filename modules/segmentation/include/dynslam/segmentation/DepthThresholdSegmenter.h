@@ -76,9 +76,9 @@ class DepthThresholdSegmenter {
   /// Steps 1-8 for one box, without mutual occlusion. `depth`: CV_32FC1 metres, 0 = invalid
   /// (std::invalid_argument otherwise). The box is rounded to whole pixels and clipped to the
   /// image first (ObjectMask::roi); an empty roi or too few valid depths in the candidate box
-  /// give valid = false with an empty mask.
+  /// give valid = false with an empty mask. `expectedDepth` > 0: as in segment().
   core::ObjectMask segmentOne(const cv::Mat& depth, const core::Detection& detection,
-                              int detectionIndex) const;
+                              int detectionIndex, double expectedDepth = 0) const;
 
   /// One ObjectMask per detection, same order, mutual occlusion resolved (and, with
   /// OccluderAware, the object cluster chosen with the other detections in view).
