@@ -109,9 +109,13 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
       const auto& d = frame.detections[k];
       c.observations.push_back(tracking::observeDetection(frame, k, /*withAppearance=*/true));
       c.observation_truth.push_back(d.truth_id > 0 ? int(d.truth_id) : -1);
+      c.observation_true_depth.push_back(0);
+      c.observation_visible.push_back(0);
       for (const auto& o : sf.objects)
         if (o.id == d.truth_id) {
           const double truthDepth = trueDepth(sf, o);
+          c.observation_true_depth.back() = truthDepth;
+          c.observation_visible.back() = o.visible_fraction;
           run.depthErrors.push_back(std::abs(c.observations.back().depth - truthDepth) /
                                     truthDepth);
         }

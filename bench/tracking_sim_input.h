@@ -23,6 +23,7 @@ struct BenchSettings {
   std::string depth = "segmentation";
   int report_coasting = 1;
   bool identities = false;  // print which tracks covered each truth id
+  int trace_first = -1, trace_last = -1;  // --trace A-B: print the tracker's frames A..B
   std::string sweep = "Tracking.rho_min=0.3,0.5,0.6,0.7,0.8";  // "": none
   std::vector<std::string> sim_overrides, tracker_overrides;
   std::vector<std::string> segmentation_overrides;  // "Segmentation.key=value" (--set)
@@ -33,6 +34,8 @@ struct CachedFrame {
   double t = 0;
   std::vector<tracking::BoxObservation> observations;
   std::vector<int> observation_truth;  // the truth id of each observation (-1: false positive)
+  std::vector<double> observation_true_depth;  // its true object depth, m (0: false positive)
+  std::vector<double> observation_visible;     // its truth's visible fraction (0: false positive)
   std::vector<evaluation::MotTruthBox> truth;
 };
 

@@ -158,3 +158,15 @@ TEST(OccluderAwareCluster, APersonBesideWhoseBoxCoversTheCandidateBoxIsNoOcclude
   EXPECT_NEAR(masks[0].d_t, 1.5, 1e-6) << "A";
   EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
 }
+
+TEST(OccluderAwareCluster, ABoxEndingAFewPixelsAboveTheBottomEdgeCountsAsCutOff) {
+  // A, 1 m away, is cut off by the bottom edge, but a detector's box for it ends 3 px above the
+  // edge (GroundTruthDetector's jitter); B, 1.7 m away and mostly hidden behind A, has a box
+  // reaching the edge. Lower in the image does not mean nearer here: A is not B's to hide.
+  const Body a{{100, 0, 80, 237}, 100, 180, 1.0f}, b{{150, 30, 80, 210}, 150, 230, 1.7f};
+  cv::Mat depth = peopleCutOffAtTheBottom({b, a});
+  depth(cv::Rect(137, 120, 6, 120)).setTo(6.0f);  // between A's legs
+  const auto masks = segmentPair(depth, a, b);
+  EXPECT_NEAR(masks[0].d_t, 1.0, 1e-6) << "A";
+  EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
+}
