@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -55,22 +56,37 @@ struct TrackerRun {
   std::vector<evaluation::MotFrame> frames;  // what was scored
 };
 
+/// |d - d_true| / d_true of every observation of a true object.
+std::vector<double> depthErrors(const CachedRun& run) {
+  std::vector<double> errors;
+  for (const auto& f : run.frames)
+    for (size_t k = 0; k < f.observations.size(); ++k) {
+      const double truthDepth = f.observation_truth[k].depth;
+      if (truthDepth > 0)
+        errors.push_back(std::abs(f.observations[k].depth - truthDepth) / truthDepth);
+    }
+  return errors;
+}
+
 /// --trace: frame i's observations (truth id, box centre, d, d_alt, true depth) and the tracks
 /// after the update (id, state, misses, the truth id of the observation taken, filter depth).
 void printTrace(size_t i, const bench::CachedFrame& f, const std::vector<core::Track>& tracks) {
   std::printf("frame %zu  obs:", i);
   for (size_t k = 0; k < f.observations.size(); ++k) {
     const auto& o = f.observations[k];
-    std::printf(" [%zu t%d x%.0f d%.2f a%.2f true%.2f v%.2f]", k, f.observation_truth[k],
-                o.box.x + o.box.width / 2, o.depth, o.depth_alt, f.observation_true_depth[k],
-                f.observation_visible[k]);
+    const auto& truth = f.observation_truth[k];
+    std::printf(" [%zu t%d x%.0f d%.2f a%.2f true%.2f v%.2f]", k, truth.id,
+                o.box.x + o.box.width / 2, o.depth, o.depth_alt, truth.depth, truth.visible);
   }
   std::printf("\n           tracks:");
-  for (const auto& t : tracks)
-    std::printf(
-        " [#%d %c%d %s d%.2f]", t.id, "TCL"[int(t.state)], t.misses,
-        t.detection >= 0 ? ("t" + std::to_string(f.observation_truth[t.detection])).c_str() : "-",
-        t.depth);
+  for (const auto& t : tracks) {
+    const char state = t.state == core::TrackState::Confirmed   ? 'C'
+                       : t.state == core::TrackState::Tentative ? 'T'
+                                                                : 'L';
+    const std::string taken =
+        t.detection >= 0 ? "t" + std::to_string(f.observation_truth[t.detection].id) : "-";
+    std::printf(" [#%d %c%d %s d%.2f]", t.id, state, t.misses, taken.c_str(), t.depth);
+  }
   std::printf("\n");
 }
 
@@ -149,15 +165,16 @@ void printAppearanceSeparation(const CachedRun& run) {
   for (size_t i = 0; i < run.frames.size(); ++i) {
     const auto& f = run.frames[i];
     for (size_t a = 0; a < f.observations.size(); ++a) {
-      if (f.observations[a].appearance.empty() || f.observation_truth[a] < 0) continue;
+      if (f.observations[a].appearance.empty() || f.observation_truth[a].id < 0) continue;
       for (size_t b = a + 1; b < f.observations.size(); ++b)
-        if (f.observation_truth[b] >= 0 && f.observation_truth[b] != f.observation_truth[a])
+        if (f.observation_truth[b].id >= 0 &&
+            f.observation_truth[b].id != f.observation_truth[a].id)
           different.push_back(tracking::appearanceDistance(f.observations[a].appearance,
                                                            f.observations[b].appearance));
       if (i == 0) continue;
       const auto& p = run.frames[i - 1];
       for (size_t b = 0; b < p.observations.size(); ++b)
-        if (p.observation_truth[b] == f.observation_truth[a])
+        if (p.observation_truth[b].id == f.observation_truth[a].id)
           same.push_back(tracking::appearanceDistance(f.observations[a].appearance,
                                                       p.observations[b].appearance));
     }
@@ -169,19 +186,19 @@ void printAppearanceSeparation(const CachedRun& run) {
   std::map<int, int> count;
   for (const auto& f : run.frames)
     for (size_t a = 0; a < f.observations.size(); ++a)
-      if (!f.observations[a].appearance.empty() && f.observation_truth[a] >= 0) {
-        cv::Mat& m = mean[f.observation_truth[a]];
+      if (!f.observations[a].appearance.empty() && f.observation_truth[a].id >= 0) {
+        cv::Mat& m = mean[f.observation_truth[a].id];
         m = m.empty() ? f.observations[a].appearance.clone() : m + f.observations[a].appearance;
-        ++count[f.observation_truth[a]];
+        ++count[f.observation_truth[a].id];
       }
   for (auto& [id, m] : mean) m /= double(count[id]);
   size_t nearestOwn = 0, described = 0;
   for (const auto& f : run.frames)
     for (size_t a = 0; a < f.observations.size(); ++a) {
-      if (f.observations[a].appearance.empty() || f.observation_truth[a] < 0) continue;
+      if (f.observations[a].appearance.empty() || f.observation_truth[a].id < 0) continue;
       double own = 1, other = 1;
       for (const auto& [id, m] : mean) {
-        double& d = id == f.observation_truth[a] ? own : other;
+        double& d = id == f.observation_truth[a].id ? own : other;
         d = std::min(d, tracking::appearanceDistance(m, f.observations[a].appearance));
       }
       nearestOwn += own < other;
@@ -213,6 +230,7 @@ void benchSimulation(const BenchSettings& s) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const TrackerRun main = runTracker(run, params, s.report_coasting, s.trace_first, s.trace_last);
   const auto& m = main.mot;
+  const std::vector<double> depthError = depthErrors(run);
 
   std::printf("scenario        %s, %zu frames %dx%d, %zu people\n", s.config.c_str(),
               run.frames.size(), run.image.width, run.image.height, run.people);
@@ -220,11 +238,11 @@ void benchSimulation(const BenchSettings& s) {
       "detections      GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported "
       "when >= %.2f visible; depth: %s (median error %.1f %%, %.1f %% of detections off by "
       "more than 15 %%)\n",
-      s.miss_rate, s.jitter, s.min_visible, s.depth.c_str(), 100 * percentile(run.depthErrors, 0.5),
+      s.miss_rate, s.jitter, s.min_visible, s.depth.c_str(), 100 * percentile(depthError, 0.5),
       100.0 *
-          double(std::count_if(run.depthErrors.begin(), run.depthErrors.end(),
+          double(std::count_if(depthError.begin(), depthError.end(),
                                [](double e) { return e > 0.15; })) /
-          double(std::max<size_t>(1, run.depthErrors.size())));
+          double(std::max<size_t>(1, depthError.size())));
   // Gaps: stretches of frames in which a truth id seen before and after is not counted
   // (hidden behind someone, or out of view): each one the tracker has to bridge.
   std::map<int, int> lastSeen;

@@ -108,17 +108,14 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
     for (size_t k = 0; k < frame.detections.size(); ++k) {
       const auto& d = frame.detections[k];
       c.observations.push_back(tracking::observeDetection(frame, k, /*withAppearance=*/true));
-      c.observation_truth.push_back(d.truth_id > 0 ? int(d.truth_id) : -1);
-      c.observation_true_depth.push_back(0);
-      c.observation_visible.push_back(0);
+      bench::ObservationTruth truth;
+      if (d.truth_id > 0) truth.id = int(d.truth_id);
       for (const auto& o : sf.objects)
         if (o.id == d.truth_id) {
-          const double truthDepth = trueDepth(sf, o);
-          c.observation_true_depth.back() = truthDepth;
-          c.observation_visible.back() = o.visible_fraction;
-          run.depthErrors.push_back(std::abs(c.observations.back().depth - truthDepth) /
-                                    truthDepth);
+          truth.depth = trueDepth(sf, o);
+          truth.visible = o.visible_fraction;
         }
+      c.observation_truth.push_back(truth);
     }
     for (const auto& o : sf.objects)
       c.truth.push_back({int(o.id), cv::Rect2d(o.box),

@@ -29,13 +29,18 @@ struct BenchSettings {
   std::vector<std::string> segmentation_overrides;  // "Segmentation.key=value" (--set)
 };
 
+/// The truth behind one observation; a false positive keeps the defaults.
+struct ObservationTruth {
+  int id = -1;         // the truth id
+  double depth = 0;    // the true object depth, m
+  double visible = 0;  // the visible fraction
+};
+
 /// What the tracker sees and what it is scored against, per frame.
 struct CachedFrame {
   double t = 0;
   std::vector<tracking::BoxObservation> observations;
-  std::vector<int> observation_truth;  // the truth id of each observation (-1: false positive)
-  std::vector<double> observation_true_depth;  // its true object depth, m (0: false positive)
-  std::vector<double> observation_visible;     // its truth's visible fraction (0: false positive)
+  std::vector<ObservationTruth> observation_truth;  // one per observation
   std::vector<evaluation::MotTruthBox> truth;
 };
 
@@ -43,8 +48,7 @@ struct CachedRun {
   cv::Size image;
   std::vector<CachedFrame> frames;
   size_t people = 0;
-  std::vector<double> depthErrors;  // |d - d_true| / d_true of the observations
-  std::vector<double> selfRho;      // depth IoU of each counted truth box with its previous one
+  std::vector<double> selfRho;  // depth IoU of each counted truth box with its previous one
 };
 
 /// Renders the scenario twice (ground truth, then images for detection and segmentation) and
