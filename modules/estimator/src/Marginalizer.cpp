@@ -91,6 +91,16 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
 
   Prior prior;
   if (n == 0) return prior;
+  // Jacobi scaling: the states' units differ by many orders of magnitude (a bias random walk
+  // between keyframes 33 ms apart carries ~1e11 of information, a position ~1e4), so the
+  // eigenvalue floors below are taken on D^-1/2 H D^-1/2, whose diagonal is one. A floor
+  // relative to the largest eigenvalue of H itself dropped every direction weaker than a
+  // hundred-millionth of the stiffest, e.g. the gyro bias as the window's rotations fix it.
+  const Eigen::VectorXd diagonal = H.diagonal();
+  const Eigen::VectorXd scale =
+      (diagonal.array() > 0).select(diagonal.array().rsqrt(), 1.0).matrix();
+  H = scale.asDiagonal() * H * scale.asDiagonal();
+  g = scale.asDiagonal() * g;
   // Schur complement of the leaving block, with a pseudo-inverse (its information can be
   // rank-deficient, e.g. an unobserved yaw).
   const auto pseudoInverse = [eps](const Eigen::MatrixXd& A) {
@@ -107,13 +117,15 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
     A -= H.bottomLeftCorner(n, m) * Hmm_inv * H.topRightCorner(m, n);
     b -= H.bottomLeftCorner(n, m) * Hmm_inv * g.head(m);
   }
-  // A = V S V^T -> J = S^1/2 V^T, r0 = S^-1/2 V^T b, so |J dx + r0|^2 = dx^T A dx + 2 b^T dx + c.
+  // A = V S V^T (scaled) -> J = S^1/2 V^T D^1/2, r0 = S^-1/2 V^T b, so that
+  // |J dx + r0|^2 = dx^T A dx + 2 b^T dx + c in the states' own units.
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
   const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
   const Eigen::VectorXd S = (es.eigenvalues().array() > floor).select(es.eigenvalues(), 0.0);
   const Eigen::VectorXd Sinv =
       (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
-  const Eigen::MatrixXd J = S.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose();
+  const Eigen::MatrixXd J = S.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() *
+                            scale.tail(n).cwiseInverse().asDiagonal();
   const Eigen::VectorXd r0 = Sinv.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() * b;
 
   std::vector<PriorBlock> blocks;

@@ -167,3 +167,40 @@ TEST(Marginalizer, MarginalisingTheOldestStateKeepsTheSolution) {
       EXPECT_NEAR(kept[k].speedBias[i], full[k].speedBias[i], 1e-5) << k << "," << i;
   }
 }
+
+namespace {
+
+/// A Gaussian factor |J (x - x0)|^2 on scalar blocks, x0 = 0.
+std::shared_ptr<MarginalizationFactor> scalarFactor(const Eigen::RowVectorXd& J) {
+  std::vector<PriorBlock> blocks(J.size(), PriorBlock{1, false, {0.0}});
+  return std::make_shared<MarginalizationFactor>(blocks, Eigen::MatrixXd(J),
+                                                 Eigen::VectorXd::Zero(1));
+}
+
+}  // namespace
+
+// States of very different stiffness leave the window together: a bias held by a random walk
+// over 33 ms carries ~1e12 of information, a velocity seen twice ~1e-2. A weak leaving state that
+// is tied to a staying one must take that tie with it; an eigenvalue floor relative to the
+// stiffest state treated it as fixed and left its tie in the prior, 100 times overconfident here.
+TEST(Marginalizer, AWeakLeavingStateNextToAStiffOneTakesItsTieAlong) {
+  double stiff = 0, weak = 0, staying = 0;
+  Eigen::RowVectorXd j1(1), j2(2), j3(1);
+  j1 << 1e6;        // the stiff leaving state, on its own
+  j2 << 0.1, -0.1;  // the weak leaving state, tied to the staying one
+  j3 << 0.01;       // what else is known of the staying one
+  Marginalizer marginalizer;
+  marginalizer.addFactor(scalarFactor(j1), nullptr, {&stiff});
+  marginalizer.addFactor(scalarFactor(j2), nullptr, {&weak, &staying});
+  marginalizer.addFactor(scalarFactor(j3), nullptr, {&staying});
+  const auto prior = marginalizer.marginalize({&stiff, &weak});
+  ASSERT_TRUE(prior.factor);
+  ASSERT_EQ(prior.blocks.size(), 1u);
+  const int rows = prior.factor->num_residuals();
+  Eigen::VectorXd r(rows), J(rows);
+  const double* at[] = {&staying};
+  double* jacobians[] = {J.data()};
+  ASSERT_TRUE(prior.factor->Evaluate(at, r.data(), jacobians));
+  // The weak state is free once it leaves, so the tie says nothing: information 0.01^2 remains.
+  EXPECT_NEAR(J.squaredNorm(), 1e-4, 1e-8);
+}
