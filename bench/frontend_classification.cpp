@@ -4,8 +4,9 @@
 //   build/bin/dynslam-sim --config params/sim/indoor_people_high.ini --out /tmp/sim/indoor
 //   build/bin/bench-classification --sim /tmp/sim/indoor [--config params/sim_frontend.ini]
 //       [--masks pipeline|truth] [--features stage|klt] [--max-frames N]
-//       [--set Section.key=value]...
-//   build/bin/bench-classification --rawlog /tmp/7s/7scenes.rawlog --config params/7scenes_frontend.ini
+//       [--per-frame FILE.csv] [--set Section.key=value]...
+//   build/bin/bench-classification --rawlog /tmp/7s/7scenes.rawlog --config
+//   params/7scenes_frontend.ini
 //
 // The frames come from the rawlog through io's SensorSync, as in `dynslam`, and go through the
 // stages of the ini's [pipeline] (created from the same registry as `dynslam`; with --sim,
@@ -36,6 +37,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -48,6 +51,7 @@ namespace fs = std::filesystem;
 struct Settings {
   std::string sim, rawlog, config = "params/sim_frontend.ini", masks = "pipeline", features;
   long max_frames = -1;
+  std::string per_frame;  ///< --per-frame: one CSV row of counts per scored frame
   std::vector<std::string> overrides;
 };
 
@@ -128,6 +132,14 @@ void run(const Settings& s) {
   size_t frames = 0, features = 0, staticFeatures = 0, withDepth = 0;
   size_t objectFeatures = 0, staticObjectFeatures = 0;
   std::vector<core::Frame> ready;
+  // --per-frame: where the static set is contaminated (features of moving objects taken for
+  // Static feed the estimator in remove mode) and where moving is over-called.
+  std::ofstream perFrame;
+  if (!s.per_frame.empty()) {
+    perFrame.open(s.per_frame, std::ios::trunc);
+    perFrame << "frame,t_s,static,static_on_moving,dynamic,dynamic_on_still\n";
+    if (!perFrame) throw std::runtime_error("cannot write --per-frame '" + s.per_frame + "'");
+  }
   bool more = true;
   while (more) {
     const auto obs = source.next();
@@ -192,7 +204,13 @@ void run(const Settings& s) {
       }
       if (truth) {
         const bool consecutive = previous && frames > 1;
+        const bench::ClassificationScore before = score;
         score.add(frame, *truth, consecutive ? &*previous : nullptr);
+        if (perFrame.is_open())
+          perFrame << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ','
+                   << (score.tn + score.fn) - (before.tn + before.fn) << ',' << score.fn - before.fn
+                   << ',' << (score.tp + score.fp) - (before.tp + before.fp) << ','
+                   << score.fp - before.fp << '\n';
         previous = std::move(truth);
       }
       if (frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", frames);
@@ -266,13 +284,14 @@ void run(const Settings& s) {
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-classification", [&] {
-    core::CommandLine cl({"--sim", "--rawlog", "--config", "--masks", "--features", "--max-frames"},
-                         {}, {"--set"});
+    core::CommandLine cl(
+        {"--sim", "--rawlog", "--config", "--masks", "--features", "--max-frames", "--per-frame"},
+        {}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << "usage: bench-classification (--sim DIR | --rawlog FILE) [--config INI] "
                    "[--masks pipeline|truth] [--features stage|klt] [--max-frames N] "
-                   "[--set Section.key=value]...\n";
+                   "[--per-frame FILE.csv] [--set Section.key=value]...\n";
       return 0;
     }
     Settings s;
@@ -288,6 +307,7 @@ int main(int argc, char** argv) {
     if (!s.features.empty() && s.features != "stage" && s.features != "klt")
       throw core::UsageError("--features must be stage or klt, not '" + s.features + "'");
     s.max_frames = long(cl.optionalInteger("--max-frames").value_or(-1));
+    s.per_frame = cl.valueOr("--per-frame", "");
     s.overrides = cl.all("--set");
     run(s);
     return 0;
