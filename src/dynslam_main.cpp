@@ -23,6 +23,10 @@ writes in DIR:
   summary.json     status, counts per observation type, frames, fps, per-stage median times
                    (and "ape" with --gt)
   timing.csv       one row per frame: frame,t_s,<stage>_ms for every stage,pipeline_ms
+  keyframes.csv    with the estimator, one row per keyframe: frame,t_s, why it is one (first,
+                   parallax, interval, few_shared), static / shared / non-rigid features,
+                   rigid objects, solve_ms, iterations, restarted, visual_inertial, then its
+                   velocity and accelerometer / gyroscope biases after the solve
   map.3Dscene      for SceneViewer3D (MRPT COpenGLScene): "static_map", a coloured point cloud
                    of the depth outside object masks (one frame in --map-every N, default 10;
                    one point per --map-voxel M cube, default 0.05 m), "camera_trajectory" (black

@@ -1,7 +1,8 @@
 // What `dynslam --out DIR` leaves besides the trajectory (issue 7): map.3Dscene, timing.csv,
-// the APE in summary.json with --gt, and the annotated video with --frames; on two seconds of
-// the simulator's indoor_people_high scenario run through the full system (params/sim_vio.ini,
-// ground-truth detector, dynamic_handling = full so the estimator follows objects).
+// keyframes.csv, the APE in summary.json with --gt, and the annotated video with --frames; on two
+// seconds of the simulator's indoor_people_high scenario run through the full system
+// (params/sim_vio.ini, ground-truth detector, dynamic_handling = full so the estimator follows
+// objects).
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/evaluation/Alignment.h>
 #include <dynslam/evaluation/Association.h>
@@ -111,6 +112,37 @@ void checkTimingCsv(const std::string& out) {
   EXPECT_EQ(rows, kFrames);
 }
 
+void checkKeyframesCsv(const std::string& out) {
+  std::ifstream in(out + "/keyframes.csv");
+  std::string header;
+  ASSERT_TRUE(std::getline(in, header));
+  EXPECT_EQ(header,
+            "frame,t_s,reason,static_features,shared_features,nonrigid_features,rigid_objects,"
+            "solve_ms,iterations,restarted,visual_inertial,vx,vy,vz,acc_bias_x,acc_bias_y,"
+            "acc_bias_z,gyro_bias_x,gyro_bias_y,gyro_bias_z");
+  size_t rows = 0;
+  long lastFrame = -1;
+  for (std::string line; std::getline(in, line); ++rows) {
+    const auto fields = split(line, ',');
+    ASSERT_EQ(fields.size(), 20u) << line;
+    const long frame = std::stol(fields[0]);
+    EXPECT_GT(frame, lastFrame) << line;
+    EXPECT_LT(frame, static_cast<long>(kFrames)) << line;
+    lastFrame = frame;
+    const std::string& reason = fields[2];
+    EXPECT_EQ(reason == "first", rows == 0) << line;
+    EXPECT_TRUE(reason == "first" || reason == "parallax" || reason == "interval" ||
+                reason == "few_shared")
+        << line;
+    EXPECT_GE(std::stoi(fields[3]), std::stoi(fields[4])) << "shared among the static: " << line;
+    EXPECT_GE(std::stod(fields[7]), 0.0) << line;
+    EXPECT_TRUE(fields[10] == "0" || fields[10] == "1") << line;
+  }
+  EXPECT_GE(rows, 5u) << "keyframes in 2 s";
+  EXPECT_EQ(static_cast<double>(rows),
+            jsonNumber(readTextFile(out + "/summary.json"), "keyframes"));
+}
+
 void checkSummaryApe(const std::string& sim, const std::string& out, const std::string& log) {
   EXPECT_NE(log.find("dynslam: APE RMSE "), std::string::npos) << log;
   const std::string summary = readTextFile(out + "/summary.json");
@@ -164,6 +196,10 @@ TEST(RunnerOutputs, TheFullSystemOnTwoSimulatedSecondsLeavesEveryOutput) {
   {
     SCOPED_TRACE("timing.csv");
     checkTimingCsv(out);
+  }
+  {
+    SCOPED_TRACE("keyframes.csv");
+    checkKeyframesCsv(out);
   }
   {
     SCOPED_TRACE("summary.json's APE");

@@ -4,6 +4,7 @@
 #include "AnnotatedOutput.h"
 #include "BuiltinStages.h"
 #include "GroundTruthScore.h"
+#include "KeyframeLog.h"
 #include "LiveView.h"
 #include "TimingLog.h"
 
@@ -199,6 +200,7 @@ int runDynslam(const RunnerArgs& args) {
   std::set<int> objectFiles;  // ids whose objects/<id>.tum this run has created
   std::optional<AnnotatedOutput> annotated;
   std::optional<TimingLog> timing;
+  std::optional<KeyframeLog> keyframeLog;   // with a pose estimator
   std::optional<viz::MapSceneBuilder> map;  // also built for --gui, saved only with args.map
   std::optional<LiveView> live;
   std::optional<core::Frame> lastFrame;  // --gui: the last frame, shown once more at the end
@@ -241,6 +243,7 @@ int runDynslam(const RunnerArgs& args) {
     sync.emplace(syncOptions);
     timing.emplace((fs::path(args.out) / "timing.csv").string(), *pipeline);
     rec.estimator = pipeline->estimatesPose();
+    if (rec.estimator) keyframeLog.emplace((fs::path(args.out) / "keyframes.csv").string());
     if (!rec.estimator)
       std::cerr << "dynslam: no pose estimator in [pipeline] stages of " << args.config
                 << ": frames are read and processed, but trajectory.tum stays empty\n";
@@ -276,6 +279,7 @@ int runDynslam(const RunnerArgs& args) {
                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                                  processStart)
                            .count());
+        if (keyframeLog) keyframeLog->append(frame);
         if (annotated) annotated->write(frame);
         if (map) map->addFrame(frame);
         if (live) {

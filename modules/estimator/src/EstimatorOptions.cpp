@@ -57,6 +57,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   dynamic_handling = core::readKeyword(c, s, "dynamic_handling", dynamic_handling, kHandlings);
   nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
   rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
+  drop_moving_landmarks = c.read_bool(s, "drop_moving_landmarks", drop_moving_landmarks);
   use_gnss = c.read_bool(s, "use_gnss", use_gnss);
   gnss.uere_horizontal_m = c.read_double(s, "gnss_uere_horizontal", gnss.uere_horizontal_m);
   gnss.vertical_factor = c.read_double(s, "gnss_vertical_factor", gnss.vertical_factor);
@@ -131,6 +132,9 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       c, s, "dynamic_handling", std::string(core::wordOf(dynamic_handling, kHandlings)),
       "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS); "
       "full: the paper (see nonrigid_factors, rigid_factors)");
+  core::writeKey(c, s, "drop_moving_landmarks", drop_moving_landmarks,
+                 "a feature classified as moving takes its static landmark, with every "
+                 "observation, out of the window (not with none)");
   core::writeKey(c, s, "nonrigid_factors", nonrigid_factors,
                  "with full: NonRigid features as constant-velocity world points (r_D)");
   core::writeKey(c, s, "rigid_factors", rigid_factors,

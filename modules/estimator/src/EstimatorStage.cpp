@@ -106,6 +106,8 @@ void EstimatorStage::process(core::Frame& frame) {
                                         options_.nonrigid_factors, options_.rigid_factors);
   std::vector<FeatureObservation>& observations = routed.landmarks;
   const std::map<std::int64_t, Eigen::Vector2d>& pixels = routed.pixels;
+  if (window_ && options_.drop_moving_landmarks)
+    landmarks_dropped_ += window_->dropLandmarks(routed.moving);
   if (options_.use_imu && !imu_) {
     for (const auto& s : frame.imu)
       if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
@@ -148,7 +150,15 @@ void EstimatorStage::process(core::Frame& frame) {
   if (!seesEnough) ++blind_frames_;
   std::vector<std::pair<int, Eigen::Isometry3d>> estimatedObjects;  // the window's, at a keyframe
   bool restarted = false;
-  if (seesEnough && selector_.decide(frame.t, pixels) != KeyframeSelector::Reason::NotKeyframe) {
+  int shared = 0;
+  const KeyframeSelector::Reason reason = seesEnough ? selector_.decide(frame.t, pixels, &shared)
+                                                     : KeyframeSelector::Reason::NotKeyframe;
+  if (reason != KeyframeSelector::Reason::NotKeyframe) {
+    core::KeyframeRecord record;
+    record.reason = KeyframeSelector::name(reason);
+    record.static_features = int(observations.size());
+    record.shared_features = shared;
+    record.nonrigid_features = int(routed.nonrigid.size());
     KeyframeInput in;
     in.t = frame.t;
     in.T_world_body = T_wb;
@@ -169,6 +179,9 @@ void EstimatorStage::process(core::Frame& frame) {
                                       window_->empty() ? Eigen::Vector3d::Zero()
                                                        : window_->latestGyroBias());
     SolveReport report = window_->addKeyframe(in);
+    record.solve_ms = report.solve_ms;
+    record.iterations = report.iterations;
+    record.rigid_objects = report.rigid_objects;
     ++keyframes_;
     solve_ms_.push_back(report.solve_ms);
     rigid_objects_solved_ += std::size_t(report.rigid_objects);
@@ -213,6 +226,14 @@ void EstimatorStage::process(core::Frame& frame) {
       window_->addKeyframe(in);
       selector_.accept(frame.t, pixels);
     }
+    record.restarted = restarted;
+    record.visual_inertial = window_->usesImu();
+    if (record.visual_inertial) {
+      record.velocity = window_->latestVelocity();
+      record.acc_bias = window_->latestAccBias();
+      record.gyro_bias = window_->latestGyroBias();
+    }
+    frame.keyframe = record;
   }
   anchorToGnss(frame.t);
   // A slightly scaled rotation compounded to inf in 6 frames through the motion prediction.
@@ -266,6 +287,7 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
       {"rigid_objects_per_keyframe", keyframes_ ? double(rigid_objects_solved_) / keyframes_ : 0.0},
       {"imu_gaps", imu_ ? double(imu_->gaps()) : 0.0},
       {"blind_frames", double(blind_frames_)},
+      {"landmarks_dropped_moving", double(landmarks_dropped_)},
       {"gnss_aligned_at", gnss_aligned_at_},
       {"gnss_alignment_rms", gnss_ && gnss_->aligned() ? gnss_->alignment().rmsResidual() : 0.0},
       {"gnss_factors", double(gnss_factors_)}};

@@ -13,7 +13,10 @@ RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, Dynamic
     if (handling == DynamicHandling::None || f.feature_class == core::FeatureClass::Static) {
       out.landmarks.push_back(o);
       out.pixels[f.id] = px;
-    } else if (full && nonrigid_factors && f.feature_class == core::FeatureClass::NonRigid) {
+      continue;
+    }
+    out.moving.push_back(f.id);
+    if (full && nonrigid_factors && f.feature_class == core::FeatureClass::NonRigid) {
       out.nonrigid.push_back(o);
     } else if (full && rigid_factors && f.feature_class == core::FeatureClass::Rigid &&
                f.object_id >= 0) {

@@ -419,6 +419,12 @@ std::vector<std::pair<int, Eigen::Isometry3d>> SlidingWindow::latestObjectPoses(
   return out;
 }
 
+std::size_t SlidingWindow::dropLandmarks(const std::vector<std::int64_t>& ids) {
+  std::size_t dropped = 0;
+  for (const std::int64_t id : ids) dropped += landmarks_.erase(id);
+  return dropped;
+}
+
 std::vector<std::pair<std::int64_t, Eigen::Vector3d>> SlidingWindow::landmarkPositions() const {
   std::vector<std::pair<std::int64_t, Eigen::Vector3d>> out;
   for (const auto& [id, l] : landmarks_.all())

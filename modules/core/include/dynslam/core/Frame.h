@@ -44,6 +44,26 @@ struct GnssFix {
   Eigen::Vector3d enu = Eigen::Vector3d::Zero();  ///< metres east, north, up from the origin
 };
 
+/// What the estimator did on a frame it made a keyframe (the runner writes keyframes.csv), so a
+/// run's drift can be traced to the keyframes where the window saw little or the IMU states
+/// moved.
+struct KeyframeRecord {
+  std::string reason;         ///< first, parallax, interval or few_shared (KeyframeSelector)
+  int static_features = 0;    ///< landmark observations given to the window
+  int shared_features = 0;    ///< of the features, those the last keyframe had too
+  int nonrigid_features = 0;  ///< r_D observations (dynamic_handling = full)
+  int rigid_objects = 0;      ///< objects with r_O / r_om factors in the solve
+  double solve_ms = 0;
+  int iterations = 0;
+  bool restarted = false;        ///< the solve failed and the window started again here
+  bool visual_inertial = false;  ///< the window had the IMU (initialized) at this keyframe
+  /// The keyframe's states after the solve: world velocity (m/s), accelerometer (m/s^2) and
+  /// gyroscope (rad/s) biases; zero while the window is RGB-D only.
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acc_bias = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gyro_bias = Eigen::Vector3d::Zero();
+};
+
 struct Frame {
   std::size_t index = 0;  ///< 0-based position in the stream of frames
   double t = 0.0;         ///< seconds (the RGB-D observation's timestamp)
@@ -84,6 +104,8 @@ struct Frame {
   /// World poses of the objects the estimator follows this frame (the runner writes one TUM
   /// trajectory per object id).
   std::vector<ObjectPose> object_poses;
+  /// Set by the estimator when this frame became a keyframe.
+  std::optional<KeyframeRecord> keyframe;
 };
 
 }  // namespace dynslam::core

@@ -48,6 +48,10 @@ struct EstimatorOptions : mrpt::config::CLoadableOptions {
   DynamicHandling dynamic_handling = DynamicHandling::Remove;
   bool nonrigid_factors = true;  ///< with full: r_D for NonRigid features (Table 9 ablation)
   bool rigid_factors = true;     ///< with full: r_O / r_om for Rigid features (Table 9 ablation)
+  /// A feature classified as moving takes its static landmark out of the window: its earlier
+  /// observations came from frames in which it was not known to move (a walker entering the
+  /// view undetected, a detector miss).
+  bool drop_moving_landmarks = true;
   bool use_imu = true;  ///< use the IMU when the frames carry gyro + accelerometer samples
   ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
@@ -79,7 +83,8 @@ class EstimatorStage : public core::Stage {
   /// keyframes, solve_ms_median, solve_ms_max, pnp_failures, resets, imu_initialized_at (s
   /// of stream, -1 never), imu_init_attempts, nonrigid_per_keyframe (features given to r_D),
   /// rigid_objects_per_keyframe (objects with r_O / r_om factors in the solve), imu_gaps,
-  /// blind_frames (too few features for a keyframe), gnss_aligned_at (s of stream, -1 never),
+  /// blind_frames (too few features for a keyframe), landmarks_dropped_moving
+  /// (drop_moving_landmarks), gnss_aligned_at (s of stream, -1 never),
   /// gnss_alignment_rms (m), gnss_factors.
   std::vector<std::pair<std::string, double>> statistics() const override;
 
@@ -109,6 +114,7 @@ class EstimatorStage : public core::Stage {
   std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0, blind_frames_ = 0;
   std::size_t rigid_objects_solved_ = 0;  // sum over keyframes of SolveReport::rigid_objects
   std::size_t gnss_factors_ = 0;
+  std::size_t landmarks_dropped_ = 0;  // drop_moving_landmarks
   double first_t_ = 0, imu_initialized_at_ = -1, gnss_aligned_at_ = -1;
   std::string last_init_failure_;
 };

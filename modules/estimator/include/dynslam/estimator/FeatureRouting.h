@@ -24,6 +24,9 @@ struct RoutedFeatures {
   std::map<std::int64_t, Eigen::Vector2d> pixels;  ///< the landmarks' pixels (keyframes, PnP)
   std::vector<FeatureObservation> nonrigid;        ///< r_D
   std::vector<RigidObjectInput> rigid_objects;     ///< r_O / r_om, one entry per object
+  /// Features classified as moving (not Static; empty with none): whatever the window holds of
+  /// them as static landmarks was taken from frames in which they were not known to move.
+  std::vector<std::int64_t> moving;
 };
 
 RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, DynamicHandling handling,

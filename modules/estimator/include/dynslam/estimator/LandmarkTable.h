@@ -54,6 +54,9 @@ class LandmarkTable {
     }
   }
 
+  /// Deletes landmark `id` with all its observations; false when there is none.
+  bool erase(std::int64_t id) { return landmarks_.erase(id) > 0; }
+
   std::map<std::int64_t, Landmark>& all() { return landmarks_; }
   const std::map<std::int64_t, Landmark>& all() const { return landmarks_; }
 

@@ -155,6 +155,11 @@ class SlidingWindow {
   /// (an L without factors yet keeps its initial value).
   std::vector<std::pair<int, Eigen::Isometry3d>> latestObjectPoses() const;
 
+  /// Deletes these features' static landmarks (all their observations) from the window, e.g.
+  /// once they are classified as moving; returns how many there were. The prior keeps what
+  /// earlier marginalisations took from them.
+  std::size_t dropLandmarks(const std::vector<std::int64_t>& ids);
+
   /// World positions of the landmarks seen in at least two keyframes, for tracking frames
   /// between keyframes.
   std::vector<std::pair<std::int64_t, Eigen::Vector3d>> landmarkPositions() const;

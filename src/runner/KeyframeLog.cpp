@@ -1,0 +1,32 @@
+#include "KeyframeLog.h"
+
+#include <dynslam/core/Frame.h>
+
+#include <iomanip>
+#include <stdexcept>
+
+namespace dynslam::runner {
+
+KeyframeLog::KeyframeLog(const std::string& path) : path_(path), out_(path, std::ios::trunc) {
+  out_ << "frame,t_s,reason,static_features,shared_features,nonrigid_features,rigid_objects,"
+          "solve_ms,iterations,restarted,visual_inertial,vx,vy,vz,acc_bias_x,acc_bias_y,"
+          "acc_bias_z,gyro_bias_x,gyro_bias_y,gyro_bias_z\n";
+  if (!out_) throw std::runtime_error("cannot write the keyframe log '" + path + "'");
+}
+
+void KeyframeLog::append(const core::Frame& frame) {
+  if (!frame.keyframe) return;
+  const core::KeyframeRecord& k = *frame.keyframe;
+  out_ << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ',' << k.reason
+       << ',' << k.static_features << ',' << k.shared_features << ',' << k.nonrigid_features << ','
+       << k.rigid_objects << ',' << std::setprecision(3) << k.solve_ms << ',' << k.iterations
+       << ',' << int(k.restarted) << ',' << int(k.visual_inertial) << std::setprecision(6);
+  for (const auto* v : {&k.velocity, &k.acc_bias, &k.gyro_bias})
+    out_ << ',' << (*v)(0) << ',' << (*v)(1) << ',' << (*v)(2);
+  out_ << '\n';
+  // Flushed now and then rather than per row: a crash loses at most a few rows.
+  if (++rows_ % 20 == 0) out_.flush();
+  if (!out_) throw std::runtime_error("cannot write the keyframe log '" + path_ + "'");
+}
+
+}  // namespace dynslam::runner
