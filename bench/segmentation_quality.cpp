@@ -6,6 +6,10 @@
 //     detector still reports); true depth = median depth of the person's visible pixels (the
 //     surface the camera sees); the torso centre's z is shown beside it
 //   - segmentation time per frame, median: <= 1.2 ms with about 3 objects (paper Table 1)
+// --pipeline INI (not the method) scores the masks the system itself ends a frame with: INI's
+// [Segmentation], then [Tracking] (every frame), then [Retrack] (boxes = tracked_detections:
+// each detection segmented again, its cluster chosen by the depth of the track that took it),
+// as `dynslam` runs them with params/sim_frontend.ini; time is then that of all three stages.
 // Detections: the people and cars at least --min-visible visible (default: the share below which
 // the system's GroundTruthDetector reports nothing, 0.2, as a real detector misses a person
 // hidden that much); --min-visible 0 gives every object with a visible pixel a box.
@@ -16,7 +20,7 @@
 //
 //   build/bin/bench-segmentation [--config params/sim/A.ini]... [--every 3] [--set s.k=v]...
 //        [--seg-set Segmentation.key=value]... [--boxes amodal|visible] [--min-visible 0.2]
-//        [--dump DIR] [--dump-max 12]
+//        [--dump DIR] [--dump-max 12] [--pipeline params/sim_frontend.ini]
 // Without --config: indoor_people_high. An augment scene (params/sim/augmented_7scenes.ini, with
 // --set Augment.rawlog=...) is scored the same way: the inserted movers' boxes and instance
 // labels against the real depth they are composited into (real pixels are label 0).
@@ -29,6 +33,7 @@
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/sim/MakeSequence.h>
+#include <dynslam/tracking/TrackingStage.h>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -40,6 +45,7 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace {
@@ -150,16 +156,55 @@ void printTable(const Scores& s) {
       t <= 1.2 ? "met" : "MISSED");
 }
 
+/// The perception stages of a pipeline ini after Detection (--pipeline): Segmentation,
+/// Tracking, Segmentation:Retrack. One instance per scenario: the tracker keeps state.
+class PerceptionStages {
+ public:
+  explicit PerceptionStages(const core::IniConfig& cfg) {
+    segmentation_.configure(cfg, "Segmentation");
+    tracking_.configure(cfg, "Tracking");
+    retrack_.configure(cfg, "Retrack");
+    if (retrack_.options().boxes != segmentation::SegmentedBoxes::TrackedDetections)
+      throw core::UsageError("--pipeline: [Retrack] boxes must be tracked_detections");
+  }
+  /// The detections' masks (one per detection, in order) at the end of the three stages.
+  std::vector<core::ObjectMask> masks(const sim::SimFrame& f,
+                                      const std::vector<core::Detection>& detections) {
+    core::Frame frame;
+    frame.t = f.t;
+    frame.rgb = f.image.rgb;
+    frame.depth = f.image.depth;
+    frame.detections = detections;
+    frame.detections_fresh = true;
+    segmentation_.process(frame);
+    tracking_.process(frame);
+    retrack_.process(frame);
+    std::vector<core::ObjectMask> out(detections.size());
+    for (const auto& m : frame.object_masks)
+      if (m.detection >= 0 && size_t(m.detection) < out.size()) out[size_t(m.detection)] = m;
+    return out;
+  }
+
+ private:
+  segmentation::SegmentationStage segmentation_, retrack_;
+  tracking::TrackingStage tracking_;
+};
+
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,
                const segmentation::DepthThresholdSegmenter& segmenter, size_t every,
-               bool visibleBoxes, double minVisible, FailureDumper& dumper) {
+               bool visibleBoxes, double minVisible, FailureDumper& dumper,
+               const std::optional<core::IniConfig>& pipeline) {
   sim::ScenarioOptions options;
   options.load(core::IniConfig::fromFile(ini, overrides));
   const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
   dumper.setPrefix(std::filesystem::path(ini).stem().string());
   Scores s;
   sim::SimFrame f;
-  for (size_t i = 0; i < sequence->frameCount(); i += every) {
+  std::optional<PerceptionStages> stages;
+  if (pipeline) stages.emplace(*pipeline);
+  // The tracker must see every frame; only every `every`-th is scored.
+  const size_t step = stages ? 1 : every;
+  for (size_t i = 0; i < sequence->frameCount(); i += step) {
     sequence->renderFrame(i, f);
     std::vector<core::Detection> detections;
     std::vector<const sim::ObjectTruth*> truths;
@@ -177,7 +222,9 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       truths.push_back(&o);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const auto masks = segmenter.segment(f.image.depth, detections);
+    const auto masks =
+        stages ? stages->masks(f, detections) : segmenter.segment(f.image.depth, detections);
+    if (i % every != 0) continue;
     s.ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     s.objects.push_back(detections.size());
@@ -225,9 +272,10 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       dumper.consider(f, o, m, iou, err);
     }
   }
-  std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes of objects >= %.2f visible\n",
+  std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes of objects >= %.2f visible%s\n",
               ini.c_str(), sequence->camera().width, sequence->camera().height, s.ms.size(),
-              sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible);
+              sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
+              stages ? "; masks after Segmentation, Tracking and Retrack (--pipeline)" : "");
   printTable(s);
   std::printf("\n");
 }
@@ -236,21 +284,26 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-segmentation", [&] {
-    core::CommandLine cl({"--every", "--boxes", "--min-visible", "--dump", "--dump-max"}, {},
-                         {"--config", "--set", "--seg-set"});
+    core::CommandLine cl(
+        {"--every", "--boxes", "--min-visible", "--dump", "--dump-max", "--pipeline"}, {},
+        {"--config", "--set", "--seg-set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << "usage: bench-segmentation [--config INI]... [--every N] [--set s.k=v]...\n"
                    "       [--seg-set Segmentation.key=value]... [--boxes amodal|visible]\n"
-                   "       [--min-visible F] [--dump DIR] [--dump-max N]\n";
+                   "       [--min-visible F] [--dump DIR] [--dump-max N] [--pipeline INI]\n";
       return 0;
     }
     std::vector<std::string> inis = cl.all("--config");
     if (inis.empty()) inis = {"params/sim/indoor_people_high.ini"};
     // The segmenter's parameters as the pipeline reads them ([Segmentation]; defaults: the
-    // method's).
-    auto segIni = core::IniConfig::fromText("", "--seg-set");
-    for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
+    // method's, or those of the --pipeline ini, which --seg-set then overrides in any section).
+    std::optional<core::IniConfig> pipeline;
+    if (const auto p = cl.valueOr("--pipeline", ""); !p.empty())
+      pipeline = core::IniConfig::fromFile(p, cl.all("--seg-set"));
+    auto segIni = pipeline ? *pipeline : core::IniConfig::fromText("", "--seg-set");
+    if (!pipeline)
+      for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
     segmentation::SegmentationStage stage;
     stage.configure(segIni, "Segmentation");
     const segmentation::DepthThresholdSegmenter segmenter(stage.options().params);
@@ -265,7 +318,8 @@ int main(int argc, char** argv) {
     FailureDumper dumper(cl.valueOr("--dump", ""),
                          static_cast<size_t>(cl.optionalInteger("--dump-max").value_or(12)));
     for (const auto& ini : inis)
-      benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper);
+      benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper,
+                pipeline);
     dumper.write();
     return 0;
   });

@@ -47,6 +47,43 @@ bool occluded(const std::vector<BoxObservation>& observations, size_t j) {
   return false;
 }
 
+// Cluster means of one surface measured in two boxes agree within a few per cent
+// (bench-segmentation: median d_t error 2 %); two people a pace apart differ by 20 % and more.
+constexpr double kSameSurfaceRatio = 0.85;
+
+/// True when `depth` is the surface of another observation whose box overlaps observation j's:
+/// its d_t lies within kSameSurfaceRatio and nearer `depth` than `otherDepth`.
+bool surfaceOfAnother(const std::vector<BoxObservation>& observations, size_t j, double depth,
+                      double otherDepth) {
+  for (size_t k = 0; k < observations.size(); ++k) {
+    const BoxObservation& n = observations[k];
+    if (k == j || !(n.depth > 0) || (n.box & observations[j].box).area() <= 0) continue;
+    const double same = core::depthRatio(n.depth, depth);
+    if (same >= kSameSurfaceRatio && same > core::depthRatio(n.depth, otherDepth)) return true;
+  }
+  return false;
+}
+
+/// The observations with d_alt kept only where a track may take it: where the cluster the
+/// segmentation chose is another detection's surface (a partly hidden person given its
+/// occluder's depth), or where d_alt is the nearer cluster and nobody else's (a person given the
+/// wall behind it). Otherwise a track whose depth had once gone to the wrong surface kept taking
+/// that surface through d_alt and never came back: with the shipped [Retrack] the d_t of
+/// unoccluded people erred 9.5 % on average against 5.6 % without it (bench-segmentation
+/// --pipeline, indoor_people_high seed 1).
+std::vector<BoxObservation> withOwnedAlternatives(std::vector<BoxObservation> observations) {
+  std::vector<char> usable(observations.size(), 0);
+  for (size_t j = 0; j < observations.size(); ++j) {
+    const BoxObservation& o = observations[j];
+    if (!(o.depth > 0 && o.depth_alt > 0)) continue;
+    usable[j] = surfaceOfAnother(observations, j, o.depth, o.depth_alt) ||
+                (o.depth_alt < o.depth && !surfaceOfAnother(observations, j, o.depth_alt, o.depth));
+  }
+  for (size_t j = 0; j < observations.size(); ++j)
+    if (!usable[j]) observations[j].depth_alt = 0;
+  return observations;
+}
+
 /// One assignment round: the tracks `trackTakes` admits that have no observation yet against the
 /// observations `observationTakes` admits that are not used yet, by the Hungarian algorithm on
 /// `gain(track, observation)` (0: the pair is refused; pairs of different categories always
@@ -102,8 +139,9 @@ void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations
       observationOf, observationUsed);
 }
 
-void KalmanBoxTracker::update(const std::vector<BoxObservation>& observations,
-                              const cv::Size& image) {
+void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv::Size& image) {
+  const std::vector<BoxObservation> observations =
+      params_.alternative_depth ? withOwnedAlternatives(input) : input;
   std::vector<int> observationOf(tracked_.size(), -1);
   std::vector<char> observationUsed(observations.size(), 0);
   associate(observations, image, params_.rho_min, false, observationOf, observationUsed);

@@ -127,7 +127,46 @@ TEST(TrackingKalmanBoxTracker, AlternativeDepthMatchesWhenTheClusterChoiceFlips)
     const core::Track* first = findId(tracks, 1);
     ASSERT_NE(first, nullptr);
     EXPECT_EQ(first->detection, alternative ? 0 : -1) << alternative;
-    if (alternative) EXPECT_NEAR(first->depth, 2.0, 0.06) << "updated by d_alt, not the wall";
+    if (alternative) {
+      EXPECT_NEAR(first->depth, 2.0, 0.06) << "updated by d_alt, not the wall";
+    }
+  }
+}
+
+TEST(TrackingKalmanBoxTracker, AlternativeDepthTakesTheOtherClusterWhenTheChosenIsAnOccluders) {
+  // P (3 m) walks behind Q (1.5 m); P's segmentation then takes Q's surface for d_t, its other
+  // cluster being P. P's track keeps P's depth; Q's keeps Q's.
+  KalmanBoxTrackerParams params;
+  params.min_hits = 1;
+  params.alternative_depth = true;
+  KalmanBoxTracker tracker(params);
+  for (int k = 0; k < 3; ++k)
+    step(tracker, k, {person(300, 150, 50, 150, 3.0), person(240, 100, 100, 300, 1.5)});
+  BoxObservation hidden = person(300, 150, 50, 150, 1.52);
+  hidden.depth_alt = 3.0;
+  const auto tracks = step(tracker, 3, {hidden, person(240, 100, 100, 300, 1.5)});
+  const core::Track* p = findId(tracks, 1);
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->detection, 0);
+  EXPECT_NEAR(p->depth, 3.0, 0.05) << "updated by d_alt, not by the occluder's surface";
+}
+
+TEST(TrackingKalmanBoxTracker, AlternativeDepthDoesNotHoldATrackOnTheWrongSurface) {
+  // A track that started on the wall behind a person (4 m: the segmentation chose wrong) and
+  // then sees the person's own surface as d_t (2 m), the wall as d_alt, with nobody else there.
+  // Were d_alt taken, the track would follow the wall for as long as the person is seen.
+  KalmanBoxTrackerParams params;
+  params.min_hits = 1;
+  params.alternative_depth = true;
+  KalmanBoxTracker tracker(params);
+  for (int k = 0; k < 3; ++k) step(tracker, k, {person(100, 100, 60, 180, 4.0)});
+  for (int k = 3; k < 10; ++k) {
+    BoxObservation seen = person(100, 100, 60, 180, 2.0);
+    seen.depth_alt = 4.0;
+    for (const auto& t : step(tracker, k, {seen}))
+      if (t.detection == 0) {
+        EXPECT_LT(t.depth, 3.0) << "frame " << k << ", track " << t.id;
+      }
   }
 }
 

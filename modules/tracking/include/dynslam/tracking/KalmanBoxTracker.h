@@ -75,7 +75,10 @@ struct KalmanBoxTrackerParams {
   /// whichever of the two depths (d_t, d_alt) gives the larger depth IoU, and updates the
   /// track's depth with that one. The cluster choice of a partly hidden person flips between
   /// the person, the occluder and the wall from frame to frame; the track's depth says which
-  /// is the person. A new track starts from d_t.
+  /// is the person. A new track starts from d_t. d_alt counts only where the chosen cluster is
+  /// the surface (d_t) of another detection whose box overlaps, or where d_alt is the nearer
+  /// cluster and nobody else's; otherwise a track whose depth once went to the wall or to an
+  /// occluder would keep taking that surface through d_alt.
   bool alternative_depth = false;
   /// Weight of the track's descriptor when a matched detection updates it (running average).
   double appearance_memory = 0.8;
