@@ -112,14 +112,21 @@ TEST(TrackingKalmanBoxTracker, DepthDecidesAcceptanceAtRhoMin) {
   }
 }
 
+namespace {
+/// Tracks confirmed on their first detection, with or without Tracking.alternative_depth.
+KalmanBoxTracker trackerConfirmingAtOnce(bool alternativeDepth) {
+  KalmanBoxTrackerParams params;
+  params.min_hits = 1;
+  params.alternative_depth = alternativeDepth;
+  return KalmanBoxTracker(params);
+}
+}  // namespace
+
 TEST(TrackingKalmanBoxTracker, AlternativeDepthMatchesWhenTheClusterChoiceFlips) {
   // A person at 2 m whose segmentation takes the wall (5 m) for d_t on frame 3, its other
   // cluster (d_alt) being the person: rho with d_t is 0.4, with d_alt about 1.
   for (const bool alternative : {false, true}) {
-    KalmanBoxTrackerParams params;
-    params.min_hits = 1;
-    params.alternative_depth = alternative;
-    KalmanBoxTracker tracker(params);
+    KalmanBoxTracker tracker = trackerConfirmingAtOnce(alternative);
     for (int k = 0; k < 3; ++k) step(tracker, k, {person(100, 100, 60, 180, 2.0)});
     BoxObservation flipped = person(100, 100, 60, 180, 5.0);
     flipped.depth_alt = 2.05;
@@ -136,10 +143,7 @@ TEST(TrackingKalmanBoxTracker, AlternativeDepthMatchesWhenTheClusterChoiceFlips)
 TEST(TrackingKalmanBoxTracker, AlternativeDepthTakesTheOtherClusterWhenTheChosenIsAnOccluders) {
   // P (3 m) walks behind Q (1.5 m); P's segmentation then takes Q's surface for d_t, its other
   // cluster being P. P's track keeps P's depth; Q's keeps Q's.
-  KalmanBoxTrackerParams params;
-  params.min_hits = 1;
-  params.alternative_depth = true;
-  KalmanBoxTracker tracker(params);
+  KalmanBoxTracker tracker = trackerConfirmingAtOnce(true);
   for (int k = 0; k < 3; ++k)
     step(tracker, k, {person(300, 150, 50, 150, 3.0), person(240, 100, 100, 300, 1.5)});
   BoxObservation hidden = person(300, 150, 50, 150, 1.52);
@@ -155,10 +159,7 @@ TEST(TrackingKalmanBoxTracker, AlternativeDepthDoesNotHoldATrackOnTheWrongSurfac
   // A track that started on the wall behind a person (4 m: the segmentation chose wrong) and
   // then sees the person's own surface as d_t (2 m), the wall as d_alt, with nobody else there.
   // Were d_alt taken, the track would follow the wall for as long as the person is seen.
-  KalmanBoxTrackerParams params;
-  params.min_hits = 1;
-  params.alternative_depth = true;
-  KalmanBoxTracker tracker(params);
+  KalmanBoxTracker tracker = trackerConfirmingAtOnce(true);
   for (int k = 0; k < 3; ++k) step(tracker, k, {person(100, 100, 60, 180, 4.0)});
   for (int k = 3; k < 10; ++k) {
     BoxObservation seen = person(100, 100, 60, 180, 2.0);
