@@ -79,13 +79,18 @@ std::shared_ptr<ImuPreintegration> preintegrate(double t0, double t1) {
   return pre;
 }
 
-double run(bool useImu, double pixelNoise, double* velocityError = nullptr) {
-  Scene scene;
+/// A 5-keyframe window (marginalisation runs many times) on the test motion's gravity.
+SlidingWindowParams fiveKeyframes(bool useImu) {
   SlidingWindowParams params;
   params.window_size = 5;
   params.use_imu = useImu;
   params.gravity = kTestGravity;
-  SlidingWindow window(params, scene.camera, scene.T_body_camera);
+  return params;
+}
+
+double run(bool useImu, double pixelNoise, double* velocityError = nullptr) {
+  Scene scene;
+  SlidingWindow window(fiveKeyframes(useImu), scene.camera, scene.T_body_camera);
   std::mt19937 rng(2);
   double worst = 0;
   const double step = 0.1;
@@ -123,11 +128,7 @@ double run(bool useImu, double pixelNoise, double* velocityError = nullptr) {
 /// predict the frames until then.
 double velocityErrorAfterAnImuGap() {
   Scene scene;
-  SlidingWindowParams params;
-  params.window_size = 5;
-  params.use_imu = true;
-  params.gravity = kTestGravity;
-  SlidingWindow window(params, scene.camera, scene.T_body_camera);
+  SlidingWindow window(fiveKeyframes(true), scene.camera, scene.T_body_camera);
   std::mt19937 rng(2);
   const double step = 0.1;
   double error = -1;
