@@ -211,19 +211,18 @@ SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
   k.id = next_id_++;
   k.t = input.t;
   poseToBlock(input.T_world_body, k.pose);
-  for (int i = 0; i < 3; ++i) k.speed_bias[i] = input.velocity(i);
   // A visual-inertial keyframe without a preintegration (the IMU stream had a gap): no IMU
   // factor ties its velocity to the previous keyframe's, and the iteration-capped solves move a
   // wrong start slowly (after a 1 s gap the stage's prediction gave 0 m/s, and 1 s later the
   // window's velocity was 0.26 of 0.47 m/s; 20 black frames then left the pose to an IMU
   // prediction 0.2 m off). Its mean velocity since the previous keyframe is the start.
+  Eigen::Vector3d velocity = input.velocity;
   if (params_.use_imu && !input.preintegration && !keyframes_.empty()) {
     const Keyframe& previous = keyframes_.back();
-    const Eigen::Vector3d v =
-        (input.T_world_body.translation() - poseFromBlock(previous.pose).translation()) /
-        (input.t - previous.t);
-    for (int i = 0; i < 3; ++i) k.speed_bias[i] = v(i);
+    velocity = (input.T_world_body.translation() - poseFromBlock(previous.pose).translation()) /
+               (input.t - previous.t);
   }
+  for (int i = 0; i < 3; ++i) k.speed_bias[i] = velocity(i);
   for (int i = 3; i < 9; ++i) k.speed_bias[i] = keyframes_.empty() ? 0.0 : keyframes_.back().speed_bias[i];
   k.preintegration = keyframes_.empty() ? nullptr : input.preintegration;
   keyframes_.push_back(k);

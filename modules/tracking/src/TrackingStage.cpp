@@ -67,7 +67,8 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "s; with reid: a new track takes a lost or coasting track's id by colour");
   TRACKING_WRITE(t.alternative_depth, "alternative_depth",
                  "match by the nearer of the mask's two cluster depths where the chosen "
-                 "one is another detection's surface (not the method)");
+                 "one is another detection's surface, or the other is nearer and nobody's "
+                 "(not the method)");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");
