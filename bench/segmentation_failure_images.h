@@ -18,6 +18,7 @@ class FailureDumper {
 
   /// Starts the names of the images kept from now on (the scenario's name).
   void setPrefix(std::string prefix) { prefix_ = std::move(prefix); }
+  const std::string& prefix() const { return prefix_; }
 
   /// One scored mask: `iou` (< 0 when not scored) and the d_t error in %.
   void consider(const dynslam::sim::SimFrame& frame, const dynslam::sim::ObjectTruth& truth,

@@ -16,11 +16,12 @@
 // Precision (mask pixels that are the person) and recall (the person's pixels in the mask)
 // tell over- from under-segmentation; "box as mask" is the IoU a mask filling the whole box
 // would score. --dump DIR writes the worst masks as images (green: right, red: not the person,
-// blue: missed).
+// blue: missed). --cases FILE writes one CSV row per scored person (its d_t, the clusters, and
+// the other overlapping object whose visible depth is nearest d_t: whose surface it took).
 //
 //   build/bin/bench-segmentation [--config params/sim/A.ini]... [--every 3] [--set s.k=v]...
 //        [--seg-set Segmentation.key=value]... [--boxes amodal|visible] [--min-visible 0.2]
-//        [--dump DIR] [--dump-max 12] [--pipeline params/sim_frontend.ini]
+//        [--dump DIR] [--dump-max 12] [--pipeline params/sim_frontend.ini] [--cases FILE.csv]
 // Without --config: indoor_people_high. An augment scene (params/sim/augmented_7scenes.ini, with
 // --set Augment.rawlog=...) is scored the same way: the inserted movers' boxes and instance
 // labels against the real depth they are composited into (real pixels are label 0).
@@ -30,6 +31,7 @@
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Median.h>
 #include <dynslam/detection/GroundTruthDetector.h>
+#include <dynslam/segmentation/FloorPlane.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/sim/MakeSequence.h>
@@ -42,10 +44,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -156,6 +160,48 @@ void printTable(const Scores& s) {
       t <= 1.2 ? "met" : "MISSED");
 }
 
+/// One --cases row: person `o` (true visible depth `z`) and its mask `m`; the other object
+/// whose box overlaps `o`'s and whose visible depth is nearest d_t, and whether it was detected.
+void writeCase(std::ostream& out, const std::string& scenario, size_t frame,
+               const sim::ObjectTruth& o, double z, const core::ObjectMask& m, double err,
+               const sim::SimFrame& f, const std::vector<core::Detection>& detections,
+               double trackDepth) {
+  const sim::ObjectTruth* other = nullptr;
+  double otherZ = 0;
+  for (const auto& q : f.objects) {
+    if (q.id == o.id || q.visible_pixels == 0 || (q.box & o.box).empty()) continue;
+    const double qz = segmentation::visibleMedianDepth(f.image.depth, f.image.label, q.id);
+    if (qz > 0 && (!other || std::abs(qz - m.d_t) < std::abs(otherZ - m.d_t))) {
+      other = &q;
+      otherZ = qz;
+    }
+  }
+  const bool otherDetected =
+      other && std::any_of(detections.begin(), detections.end(),
+                           [&](const core::Detection& d) { return d.truth_id == other->id; });
+  out << scenario << ',' << frame << ',' << o.id << ',' << o.visible_fraction << ',' << z << ','
+      << m.d_t << ',' << m.d_alt << ',' << m.d_o << ',' << m.d_b << ',' << err << ','
+      << (other ? other->id : -1) << ',' << otherZ << ',' << (other ? other->visible_fraction : 0.0)
+      << ',' << otherDetected << ',' << trackDepth << '\n';
+}
+
+/// Cars (no target in the issue; the front-end's car features depend on them): mask IoU of
+/// those at least half visible and the d_t error.
+void printCars(const Scores& s) {
+  std::printf(
+      "  cars seen %zu: mask IoU (>= 50 %% visible, %zu) mean %.3f, median %.3f, precision %.3f, "
+      "recall %.3f; beyond range %zu, masks without enough depth %zu\n",
+      s.people, s.iou.size(), mean(s.iou), dynslam::core::upperMedian(s.iou), mean(s.precision),
+      mean(s.recall), s.outOfRange, s.invalid);
+  const double a = std::max<size_t>(1, s.maskObject);
+  std::printf("    car mask pixels not the car: %.1f %% background, %.1f %% another object\n",
+              100 * s.maskBackground / a, 100 * s.maskOther / a);
+  for (int c = None; c <= Severe; ++c)
+    std::printf("    d_t error, %-22s (%4zu): mean %6.2f %%, median %6.2f %%\n", kOcclusionName[c],
+                s.depthErr[c].size(), mean(s.depthErr[c]),
+                dynslam::core::upperMedian(s.depthErr[c]));
+}
+
 /// The perception stages of a pipeline ini after Detection (--pipeline): Segmentation,
 /// Tracking, Segmentation:Retrack. One instance per scenario: the tracker keeps state.
 class PerceptionStages {
@@ -169,9 +215,11 @@ class PerceptionStages {
   }
   /// The detections' masks (one per detection, in order) at the end of the three stages.
   std::vector<core::ObjectMask> masks(const sim::SimFrame& f,
-                                      const std::vector<core::Detection>& detections) {
+                                      const std::vector<core::Detection>& detections,
+                                      const core::CameraIntrinsics& intrinsics) {
     core::Frame frame;
     frame.t = f.t;
+    frame.intrinsics = intrinsics;
     frame.rgb = f.image.rgb;
     frame.depth = f.image.depth;
     frame.detections = detections;
@@ -182,23 +230,33 @@ class PerceptionStages {
     std::vector<core::ObjectMask> out(detections.size());
     for (const auto& m : frame.object_masks)
       if (m.detection >= 0 && size_t(m.detection) < out.size()) out[size_t(m.detection)] = m;
+    trackDepth_.assign(detections.size(), 0.0);
+    for (const auto& t : frame.tracks)
+      if (t.detection >= 0 && size_t(t.detection) < out.size())
+        trackDepth_[size_t(t.detection)] = t.depth;
     return out;
   }
 
  private:
   segmentation::SegmentationStage segmentation_, retrack_;
   tracking::TrackingStage tracking_;
+  std::vector<double> trackDepth_;
+
+ public:
+  /// The depth of the track that took each detection of the last frame (0: none).
+  const std::vector<double>& trackDepth() const { return trackDepth_; }
 };
 
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,
                const segmentation::DepthThresholdSegmenter& segmenter, size_t every,
                bool visibleBoxes, double minVisible, FailureDumper& dumper,
-               const std::optional<core::IniConfig>& pipeline) {
+               const std::optional<core::IniConfig>& pipeline, std::ostream* cases,
+               const segmentation::SegmentationStage& floorStage) {
   sim::ScenarioOptions options;
   options.load(core::IniConfig::fromFile(ini, overrides));
   const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
   dumper.setPrefix(std::filesystem::path(ini).stem().string());
-  Scores s;
+  Scores s, cars;  // people (the issue's targets), cars (printed apart)
   sim::SimFrame f;
   std::optional<PerceptionStages> stages;
   if (pipeline) stages.emplace(*pipeline);
@@ -222,8 +280,9 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       truths.push_back(&o);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const auto masks =
-        stages ? stages->masks(f, detections) : segmenter.segment(f.image.depth, detections);
+    auto masks = stages ? stages->masks(f, detections, sequence->camera())
+                        : segmenter.segment(f.image.depth, detections);
+    if (!stages) floorStage.dropFloor(masks, detections, f.image.depth, sequence->camera());
     if (i % every != 0) continue;
     s.ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
@@ -232,17 +291,18 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
     const Eigen::Isometry3d T_camera_world = f.T_world_camera.inverse();
     for (size_t k = 0; k < masks.size(); ++k) {
       const auto& o = *truths[k];
-      if (o.category != "person") continue;
-      ++s.people;
+      if (o.category != "person" && o.category != "car") continue;
+      Scores& sc = o.category == "car" ? cars : s;  // frame figures (ms, objects) stay in s
+      ++sc.people;
       const auto& m = masks[k];
       // The person's true depth; none when all its visible pixels lie beyond the sensor's range
       // (no mask can hold them: such people are counted apart and not scored).
       const double z = segmentation::visibleMedianDepth(f.image.depth, f.image.label, o.id);
       if (z <= 0) {
-        ++s.outOfRange;
+        ++sc.outOfRange;
         continue;
       }
-      if (!m.valid) ++s.invalid;
+      if (!m.valid) ++sc.invalid;
       const cv::Mat truth = f.image.label == o.id;
       const Occlusion c = o.visible_fraction >= 0.9   ? None
                           : o.visible_fraction >= 0.5 ? Mild
@@ -250,26 +310,29 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       double iou = -1;
       if (c != Severe) {
         iou = segmentation::maskIoU(m, truth);
-        s.iou.push_back(iou);
+        sc.iou.push_back(iou);
         const int area = m.valid ? cv::countNonZero(m.mask) : 0;
         const int hit = m.valid ? cv::countNonZero(m.mask & truth(m.roi)) : 0;
-        s.precision.push_back(area ? double(hit) / area : 0);
-        s.recall.push_back(double(hit) / o.visible_pixels);
-        s.boxIoU.push_back(double(o.visible_pixels) / std::max(1, m.roi.area()));
-        s.iouAlone.push_back(
+        sc.precision.push_back(area ? double(hit) / area : 0);
+        sc.recall.push_back(double(hit) / o.visible_pixels);
+        sc.boxIoU.push_back(double(o.visible_pixels) / std::max(1, m.roi.area()));
+        sc.iouAlone.push_back(
             segmentation::maskIoU(segmenter.segmentOne(f.image.depth, detections[k], k), truth));
-        tallyPixels(f.image.label, f.image.depth, uint16_t(o.id), m, s);
+        tallyPixels(f.image.label, f.image.depth, uint16_t(o.id), m, sc);
       }
       if (!m.valid) continue;
       const double torsoZ = (T_camera_world * o.T_world_object).translation().z();
       const double err = 100 * std::abs(m.d_t - z) / z;
-      if (iou >= 0 && err <= 5) s.iouRightDepth.push_back(iou);
-      s.depthErr[c].push_back(err);
+      if (iou >= 0 && err <= 5) sc.iouRightDepth.push_back(iou);
+      sc.depthErr[c].push_back(err);
       const double e = segmenter.marginFor(detections[k]);
-      s.behind[c] += m.d_t > z + e;
-      s.inFront[c] += m.d_t < z - e;
-      s.torsoErr[c].push_back(100 * std::abs(m.d_t - torsoZ) / torsoZ);
-      dumper.consider(f, o, m, iou, err);
+      sc.behind[c] += m.d_t > z + e;
+      sc.inFront[c] += m.d_t < z - e;
+      sc.torsoErr[c].push_back(100 * std::abs(m.d_t - torsoZ) / torsoZ);
+      if (&sc == &s) dumper.consider(f, o, m, iou, err);
+      if (cases && &sc == &s)
+        writeCase(*cases, dumper.prefix(), i, o, z, m, err, f, detections,
+                  stages ? stages->trackDepth()[k] : 0.0);
     }
   }
   std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes of objects >= %.2f visible%s\n",
@@ -277,6 +340,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
               sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
               stages ? "; masks after Segmentation, Tracking and Retrack (--pipeline)" : "");
   printTable(s);
+  if (cars.people > 0) printCars(cars);
   std::printf("\n");
 }
 
@@ -285,13 +349,14 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
 int main(int argc, char** argv) {
   return core::runProgram("bench-segmentation", [&] {
     core::CommandLine cl(
-        {"--every", "--boxes", "--min-visible", "--dump", "--dump-max", "--pipeline"}, {},
-        {"--config", "--set", "--seg-set"});
+        {"--every", "--boxes", "--min-visible", "--dump", "--dump-max", "--pipeline", "--cases"},
+        {}, {"--config", "--set", "--seg-set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << "usage: bench-segmentation [--config INI]... [--every N] [--set s.k=v]...\n"
                    "       [--seg-set Segmentation.key=value]... [--boxes amodal|visible]\n"
-                   "       [--min-visible F] [--dump DIR] [--dump-max N] [--pipeline INI]\n";
+                   "       [--min-visible F] [--dump DIR] [--dump-max N] [--pipeline INI]\n"
+                   "       [--cases FILE.csv]\n";
       return 0;
     }
     std::vector<std::string> inis = cl.all("--config");
@@ -317,9 +382,16 @@ int main(int argc, char** argv) {
             .value_or(detection::GroundTruthDetectorSettings{}.min_visible_fraction);
     FailureDumper dumper(cl.valueOr("--dump", ""),
                          static_cast<size_t>(cl.optionalInteger("--dump-max").value_or(12)));
+    std::ofstream cases;
+    if (const auto path = cl.valueOr("--cases", ""); !path.empty()) {
+      cases.open(path);
+      if (!cases) throw std::runtime_error("--cases " + path + ": cannot write");
+      cases << "scenario,frame,id,visible,true_depth,d_t,d_alt,d_o,d_b,err_pct,nearest_other_id,"
+               "nearest_other_depth,nearest_other_visible,nearest_other_detected,track_depth\n";
+    }
     for (const auto& ini : inis)
       benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper,
-                pipeline);
+                pipeline, cases.is_open() ? &cases : nullptr, stage);
     dumper.write();
     return 0;
   });
