@@ -21,6 +21,9 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
   p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
   p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
+  p.moving_feature_speed = c.read_double(s, "moving_feature_speed", p.moving_feature_speed);
+  p.moving_feature_max_speed =
+      c.read_double(s, "moving_feature_max_speed", p.moving_feature_max_speed);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
   p.background_outside_boxes =
       c.read_bool(s, "background_outside_boxes", p.background_outside_boxes);
@@ -52,6 +55,10 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "dynamic when speed > speed_threshold + this * the speed's noise (0: the method)");
   core::writeKey(c, s, "still_feature_speed", p.still_feature_speed,
                  "m/s; a static feature slower than this stays static in any mask (0: off)");
+  core::writeKey(c, s, "moving_feature_speed", p.moving_feature_speed,
+                 "m/s; a feature faster than this in a still object's mask is non-rigid (0: off)");
+  core::writeKey(c, s, "moving_feature_max_speed", p.moving_feature_max_speed,
+                 "m/s; ... and slower than this (faster: a depth jump or a slid track)");
   core::writeKey(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
   core::writeKey(c, s, "depth_window", p.depth_window,
@@ -97,6 +104,11 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
     fail("speed_noise_sigmas", std::to_string(p.speed_noise_sigmas), "must be >= 0");
   if (!(p.still_feature_speed >= 0))
     fail("still_feature_speed", std::to_string(p.still_feature_speed), "must be >= 0");
+  if (!(p.moving_feature_speed >= 0))
+    fail("moving_feature_speed", std::to_string(p.moving_feature_speed), "must be >= 0");
+  if (!(p.moving_feature_max_speed > p.moving_feature_speed))
+    fail("moving_feature_max_speed", std::to_string(p.moving_feature_max_speed),
+         "must be > moving_feature_speed");
   if (p.speed_window < 1) fail("speed_window", std::to_string(p.speed_window), "must be >= 1");
   if (p.min_flow_features < 1)
     fail("min_flow_features", std::to_string(p.min_flow_features), "must be >= 1");

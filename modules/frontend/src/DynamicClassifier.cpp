@@ -273,6 +273,14 @@ void DynamicClassifier::process(core::Frame& frame) {
     const bool stillAndWasStatic = cur[i].speed >= 0 &&
                                    cur[i].speed < params_.still_feature_speed &&
                                    wasStatic_.count(f.id) > 0;
+    const bool movingInStillObject = region && !dynamic[region->object_id] &&
+                                     params_.moving_feature_speed > 0 &&
+                                     cur[i].speed > params_.moving_feature_speed &&
+                                     cur[i].speed < params_.moving_feature_max_speed;
+    if (movingInStillObject) {
+      f.feature_class = core::FeatureClass::NonRigid;
+      continue;
+    }
     if (!region || !dynamic[region->object_id] || stillAndWasStatic) {
       nextStatic.insert(f.id);
       continue;  // Static

@@ -196,6 +196,21 @@ TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoas
   EXPECT_EQ(walker, 25);
 }
 
+/// Frames 0-14 of the scene through a classifier with `params`, the masks of frames 12-14 edited
+/// by `editMasks` (a detection missed, a mask grown over another object); the last frame.
+template <class EditMasks>
+core::Frame classifyWithEditedMasks(const DynamicClassifierParams& params, EditMasks editMasks) {
+  const Scene scene;
+  DynamicClassifier classifier(params);
+  core::Frame f;
+  for (int k = 0; k < 15; ++k) {
+    f = scene.frame(k);
+    if (k >= 12) editMasks(f.object_masks);
+    classifier.process(f);
+  }
+  return f;
+}
+
 // The walker's mask grows over the left half of the standing person (a mask holds every pixel of
 // its box within its depth range; here the standing person's own detection is missed too): by
 // the object's class the standing person's features there turn dynamic; with
@@ -203,29 +218,22 @@ TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoas
 // stay dynamic.
 TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
   auto run = [](double stillSpeed) {
-    const Scene scene;
     DynamicClassifierParams params;
     params.still_feature_speed = stillSpeed;
-    DynamicClassifier classifier(params);
-    core::Frame f;
-    for (int k = 0; k < 15; ++k) {
-      f = scene.frame(k);
-      if (k >= 12) {
-        // The walker's pixels and those of the standing person's left half, not the wall
-        // between them.
-        const cv::Rect walker = f.object_masks[0].roi;
-        cv::Rect half = f.object_masks[1].roi;
-        half.width /= 2;
-        const cv::Rect roi = walker | half;
-        cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
-        mask(walker - roi.tl()).setTo(255);
-        mask(half - roi.tl()).setTo(255);
-        f.object_masks[0].roi = roi;
-        f.object_masks[0].mask = mask;
-        f.object_masks.erase(f.object_masks.begin() + 1);
-      }
-      classifier.process(f);
-    }
+    const core::Frame f = classifyWithEditedMasks(params, [](std::vector<core::ObjectMask>& m) {
+      // The walker's pixels and those of the standing person's left half, not the wall
+      // between them.
+      const cv::Rect walker = m[0].roi;
+      cv::Rect half = m[1].roi;
+      half.width /= 2;
+      const cv::Rect roi = walker | half;
+      cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
+      mask(walker - roi.tl()).setTo(255);
+      mask(half - roi.tl()).setTo(255);
+      m[0].roi = roi;
+      m[0].mask = mask;
+      m.erase(m.begin() + 1);
+    });
     int onWalker = 0, staticOnWalker = 0, walkerDynamic = 0;
     for (const auto& feat : f.features) {
       if (feat.id >= 2000 && feat.id < 3000 && feat.object_id == 1) {
@@ -243,6 +251,39 @@ TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
   EXPECT_EQ(method.first, 0) << "by the object's class: dynamic";
   const auto still = run(0.2);
   EXPECT_EQ(still.first, still.second) << "still: Static";
+}
+
+// The converse: the standing person's mask grows over the walker (a walker less than e behind a
+// standing person, whose own detection is missed). By the object's class the walker's features
+// there turn Static; with moving_feature_speed they are NonRigid, as they move, while the
+// standing person's own features stay Static.
+TEST(DynamicClassifier, MovingFeaturesInAStillObjectsMaskAreNonRigid) {
+  auto run = [](double movingSpeed) {
+    DynamicClassifierParams params;
+    params.moving_feature_speed = movingSpeed;
+    const core::Frame f = classifyWithEditedMasks(params, [](std::vector<core::ObjectMask>& m) {
+      const cv::Rect roi = m[0].roi | m[1].roi;
+      m[1].roi = roi;
+      m[1].mask = cv::Mat(roi.size(), CV_8UC1, cv::Scalar(255));
+      m.erase(m.begin());
+    });
+    int walkerInStill = 0, walkerNonRigid = 0, standingStatic = 0, standing = 0;
+    for (const auto& feat : f.features) {
+      if (feat.id >= 1000 && feat.id < 2000 && feat.object_id == 2) {
+        ++walkerInStill;
+        walkerNonRigid += feat.feature_class == core::FeatureClass::NonRigid;
+      }
+      if (feat.id >= 2000 && feat.id < 3000) {
+        ++standing;
+        standingStatic += feat.feature_class == core::FeatureClass::Static;
+      }
+    }
+    EXPECT_EQ(walkerInStill, 25) << "the standing person's mask holds the walker";
+    EXPECT_EQ(standingStatic, standing) << "the standing person's own features stay Static";
+    return walkerNonRigid;
+  };
+  EXPECT_EQ(run(0.0), 0) << "by the object's class: Static";
+  EXPECT_EQ(run(0.5), 25) << "the walker's features move at 0.85 m/s: NonRigid";
 }
 
 // The walker's mask misses the right half of its box, as masks miss a tenth of a walker's

@@ -45,6 +45,14 @@
 //    that were Static: a walker's foot planted on the floor is still for a third of a second
 //    too, and letting such features turn Static (tried) broke the estimator (19 restarts, APE
 //    2.4 m), as they move again before the window's speed says so.
+//  - moving_feature_speed (default 0 = off): the converse. A feature in the mask of an object
+//    judged not to move whose own scene flow over the window exceeds this speed is NonRigid:
+//    a walker passing less than e behind or in front of a standing person puts its pixels
+//    into the standing person's mask (most of the walkers' features classified static on
+//    indoor_people_high were there), and a still object's own features measure a few cm/s.
+//    Up to moving_feature_max_speed: a faster flow is a depth jump at a silhouette or a
+//    feature whose track slid from one surface onto another (on indoor_people_high a third of
+//    the still objects' features above 0.8 m/s read more than 3 m/s; the walkers', 0.6-1.7).
 // The camera's motion between frames, which the scene flow removes, is the gyro's rotation and
 // a translation registered on background features (CameraMotion.h). Background means outside
 // every detection box and every track's box (background_outside_boxes), not merely outside the
@@ -88,6 +96,10 @@ struct DynamicClassifierParams {
   /// Static whichever object's mask takes it (not the method, which decides per object; 0:
   /// off). See the file comment.
   double still_feature_speed = 0.0;
+  /// A feature in a non-moving object's mask whose own scene flow over the window is faster
+  /// than this (m/s) is NonRigid (not the method; 0: off). See the file comment.
+  double moving_feature_speed = 0.0;
+  double moving_feature_max_speed = 2.5;  ///< m/s; faster flows do not count (see above)
   /// Side of the window whose robust median depth places each feature in 3-D (1: the
   /// feature's own depth reading). See the file comment.
   int depth_window = 5;
