@@ -10,7 +10,7 @@ segStats() {
       match($0, /mean [0-9.]+/); iou += substr($0, RSTART + 5, RLENGTH - 5)
       match($0, /median [0-9.]+/); iouMed += substr($0, RSTART + 7, RLENGTH - 7); k++
       match($0, /visible \([0-9]+\)/); scored += substr($0, RSTART + 9, RLENGTH - 10) }
-    /precision [0-9.]+, recall/ {
+    /precision [0-9.]+, recall [0-9.]+ \(means\)/ {  # the people line, not the cars one
       match($0, /precision [0-9.]+/); prec += substr($0, RSTART + 10, RLENGTH - 10)
       match($0, /recall [0-9.]+/); rec += substr($0, RSTART + 7, RLENGTH - 7) }
     /time per frame: median/ {
