@@ -91,6 +91,16 @@ std::optional<RegistrationResult> CameraMotionEstimator::translationWithRotation
   return r;
 }
 
+Eigen::Vector3d CameraMotionEstimator::recentTranslation() const {
+  Eigen::Vector3d m;
+  std::vector<double> c(recent_.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (size_t i = 0; i < recent_.size(); ++i) c[i] = recent_[i](axis);
+    m(axis) = core::upperMedianInPlace(c);
+  }
+  return m;
+}
+
 CameraMotionEstimate CameraMotionEstimator::estimate(
     const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
     const std::optional<Eigen::Matrix3d>& gyro_rotation,
@@ -121,6 +131,8 @@ CameraMotionEstimate CameraMotionEstimator::estimate(
   }
   if (r && int(r->inliers.size()) >= params_.min_inliers) {
     e.motion = r->motion;
+    recent_.push_back(r->motion.t);
+    if (recent_.size() > kRecentTranslations) recent_.pop_front();
     e.inliers = int(r->inliers.size());
     if (e.source == CameraMotionSource::Registration) {
       double sum = 0;
@@ -129,7 +141,7 @@ CameraMotionEstimate CameraMotionEstimator::estimate(
     }
     e.translation_sigma = lastSigma_;
   } else if (gyro_rotation) {
-    e.motion = {*gyro_rotation, previous_.t};
+    e.motion = {*gyro_rotation, recent_.empty() ? previous_.t : recentTranslation()};
     e.source = CameraMotionSource::ImuRotationConstantVelocity;
   } else {
     e.motion = previous_;

@@ -111,5 +111,31 @@ TEST(CameraMotion, BackgroundRegistrationRecoversTheMotionAmongMovers) {
   EXPECT_LT((blind.motion.isometry().matrix() - T.matrix()).norm(), 1e-9);
 }
 
+// Without background pairs the gyro's rotation takes the median of the recent registered
+// translations, not the last one: the last registration before a person fills the view is the
+// one made on the fewest pairs.
+TEST(CameraMotion, TheConstantVelocityTranslationIsTheMedianOfTheRecentOnes) {
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> u(-2, 2);
+  const Eigen::Vector3d t(0.015, 0.003, 0.0);  // m per frame
+  CameraMotionEstimator estimator;
+  const auto registerWith = [&](const Eigen::Vector3d& translation) {
+    std::vector<Eigen::Vector3d> p, q;
+    for (int i = 0; i < 40; ++i) {
+      p.emplace_back(u(gen), u(gen) / 2, 4 + u(gen) / 2);
+      q.push_back(p.back() + translation);
+    }
+    return estimator.estimate(p, q, Eigen::Matrix3d::Identity(), std::nullopt, std::nullopt);
+  };
+  for (int k = 0; k < 9; ++k) registerWith(t);
+  const Eigen::Vector3d off = t + Eigen::Vector3d(0, 0, -0.025);  // 2.5 cm off in depth
+  ASSERT_LT((registerWith(off).motion.t - off).norm(), 1e-9);
+  const auto blind =
+      estimator.estimate({}, {}, Eigen::Matrix3d::Identity(), std::nullopt, std::nullopt);
+  EXPECT_EQ(blind.source, CameraMotionSource::ImuRotationConstantVelocity);
+  EXPECT_LT((blind.motion.t - t).norm(), 1e-9)
+      << "the median, not the last (" << off.transpose() << ")";
+}
+
 }  // namespace
 }  // namespace dynslam::frontend

@@ -60,7 +60,9 @@
 // no mask at all, and a handful of such near features outvote the far wall, whose depth noise
 // admits any centimetre-sized translation. On indoor_people_high the translation then followed
 // a walker by 1-2 cm per frame for ten frames, and the standing person's features, the same ones
-// whose speed read 0.06 m/s with the ground-truth masks, read 0.25 m/s: dynamic.
+// whose speed read 0.06 m/s with the ground-truth masks, read 0.25 m/s: dynamic. With fewer
+// than camera.min_inliers such pairs the camera motion is the gyro's rotation with the recent
+// translation (CameraMotion.h), not a registration on the features inside boxes.
 // Membership beyond the masks: a feature that no mask holds but that was on a tracked object in
 // the previous frame stays with that object while its track lives, unless the object's mask box
 // holds the pixel (then the mask says the feature left it): a detector miss (the track coasts)
@@ -104,8 +106,8 @@ struct DynamicClassifierParams {
   /// feature's own depth reading). See the file comment.
   int depth_window = 5;
   /// The camera's translation is registered on features outside every detection box and every
-  /// track's box, not just outside the masks (true), when at least camera.min_inliers such
-  /// pairs exist; else outside the masks. See the file comment.
+  /// track's box, not just outside the masks (true); with fewer than camera.min_inliers such
+  /// pairs, constant velocity. See the file comment.
   bool background_outside_boxes = true;
   RigidPointSetParams rigid;     ///< the objects' rigid sets (method.md section 4)
   CameraMotionParams camera;     ///< the background registration
