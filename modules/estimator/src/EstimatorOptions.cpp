@@ -40,6 +40,9 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   pnp_threshold_px = c.read_double(s, "pnp_threshold_px", pnp_threshold_px);
   pnp_max_correction_m = c.read_double(s, "pnp_max_correction_m", pnp_max_correction_m);
   pnp_max_correction_deg = c.read_double(s, "pnp_max_correction_deg", pnp_max_correction_deg);
+  pnp_max_imu_correction_m = c.read_double(s, "pnp_max_imu_correction_m", pnp_max_imu_correction_m);
+  pnp_max_imu_correction_deg =
+      c.read_double(s, "pnp_max_imu_correction_deg", pnp_max_imu_correction_deg);
   max_speed = c.read_double(s, "max_speed", max_speed);
   max_gyro_bias = c.read_double(s, "max_gyro_bias", max_gyro_bias);
   max_acc_bias = c.read_double(s, "max_acc_bias", max_acc_bias);
@@ -107,6 +110,11 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "m; a PnP pose farther than this from the motion prediction is rejected");
   core::writeKey(c, s, "pnp_max_correction_deg", pnp_max_correction_deg,
                  "deg; a PnP pose turned more than this from the motion prediction is rejected");
+  core::writeKey(c, s, "pnp_max_imu_correction_m", pnp_max_imu_correction_m,
+                 "m; visual-inertial: a PnP pose farther from the IMU prediction is not used "
+                 "(0: off)");
+  core::writeKey(c, s, "pnp_max_imu_correction_deg", pnp_max_imu_correction_deg,
+                 "deg; the same for the rotation (0: off)");
   core::writeKey(c, s, "use_imu", use_imu,
                  "use the IMU when the frames carry gyro + accelerometer samples");
   core::writeKey(c, s, "acc_noise", window.imu_noise.acc_noise,

@@ -20,11 +20,13 @@ void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& se
     throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
   }
   const auto& w = options_.window;
-  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) || w.solver_threads < 1 ||
-      !(w.pixel_sigma > 0) || !(w.huber_sigmas > 0) || options_.min_pnp_inliers < 4)
+  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) ||
+      w.solver_threads < 1 || !(w.pixel_sigma > 0) || !(w.huber_sigmas > 0) ||
+      options_.min_pnp_inliers < 4 || !(options_.pnp_max_imu_correction_m >= 0) ||
+      !(options_.pnp_max_imu_correction_deg >= 0))
     throw core::ConfigError("[" + section + "] in " + cfg.source() +
                             ": window_size >= 2, max_iterations >= 1, solver_threads >= 1, "
-                            "min_pnp_inliers >= 4 and "
+                            "min_pnp_inliers >= 4, pnp_max_imu_correction_m/_deg >= 0 and "
                             "positive max_solver_time, pixel_sigma, huber_sigmas are required");
   selector_ = KeyframeSelector(options_.keyframes);
 }
@@ -41,7 +43,9 @@ void EstimatorStage::startWindow(const core::Frame& frame) {
   selector_ = KeyframeSelector(options_.keyframes);
 }
 
-Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocity) const {
+Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocity,
+                                              bool* fromImu) const {
+  if (fromImu) *fromImu = false;
   if (window_ && window_->usesImu() && imu_) {
     if (const auto pre = imu_->peekAt(t)) {
       const Eigen::Isometry3d T = window_->latestPose();
@@ -54,7 +58,10 @@ Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocit
       out.linear() = q.toRotationMatrix();
       out.translation() = p;
       if (velocity) *velocity = v;
-      if (!last_body_ || plausibleStep(last_body_->inverse() * out)) return out;
+      if (!last_body_ || plausibleStep(last_body_->inverse() * out)) {
+        if (fromImu) *fromImu = true;
+        return out;
+      }
       // A diverging IMU state: fall through to the visual motion model.
     }
   }
@@ -69,9 +76,7 @@ Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocit
 }
 
 bool EstimatorStage::plausibleStep(const Eigen::Isometry3d& step) const {
-  return step.matrix().allFinite() && step.translation().norm() <= options_.pnp_max_correction_m &&
-         Eigen::AngleAxisd(step.rotation()).angle() * 180.0 / M_PI <=
-             options_.pnp_max_correction_deg;
+  return withinStep(step, options_.pnp_max_correction_m, options_.pnp_max_correction_deg);
 }
 
 void EstimatorStage::tryImuInitialization(double t) {
@@ -119,7 +124,8 @@ void EstimatorStage::process(core::Frame& frame) {
   const Eigen::Isometry3d T_ic = frame.T_body_imu.inverse() * frame.T_body_camera;
 
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  const Eigen::Isometry3d predicted = predictBody(frame.t, &velocity);
+  bool predictedByImu = false;
+  const Eigen::Isometry3d predicted = predictBody(frame.t, &velocity, &predictedByImu);
   Eigen::Isometry3d T_wb = predicted;
   if (!window_) {
     startWindow(frame);
@@ -133,11 +139,12 @@ void EstimatorStage::process(core::Frame& frame) {
     // extrapolates one bad step frame after frame (indoor_people_low, detector seed 2: a 0.15 m
     // step at frame 3 became 4.5 m/s, every PnP pose after it was refused as too far from the
     // prediction and the window restarted 160 times), while the PnP pose against the window's
-    // own map stays right.
+    // own map stays right. With an IMU prediction and pnp_max_imu_correction_* set, near it.
     const std::optional<Eigen::Isometry3d> trackedBody =
         tracked ? std::optional(tracked->T_world_camera * T_ic.inverse()) : std::nullopt;
-    if (trackedBody && (plausibleStep(predicted.inverse() * *trackedBody) ||
-                        (last_body_ && plausibleStep(last_body_->inverse() * *trackedBody))))
+    const PnpPoseGate gate{options_.pnp_max_correction_m, options_.pnp_max_correction_deg,
+                           options_.pnp_max_imu_correction_m, options_.pnp_max_imu_correction_deg};
+    if (trackedBody && acceptPnpPose(*trackedBody, predicted, predictedByImu, last_body_, gate))
       T_wb = *trackedBody;
     else
       ++pnp_failures_;

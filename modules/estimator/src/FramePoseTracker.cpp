@@ -5,7 +5,23 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/eigen.hpp>
 
+#include <cmath>
+
 namespace dynslam::estimator {
+
+bool withinStep(const Eigen::Isometry3d& step, double max_m, double max_deg) {
+  return step.matrix().allFinite() && step.translation().norm() <= max_m &&
+         Eigen::AngleAxisd(step.rotation()).angle() * 180.0 / M_PI <= max_deg;
+}
+
+bool acceptPnpPose(const Eigen::Isometry3d& tracked, const Eigen::Isometry3d& predicted,
+                   bool predictedByImu, const std::optional<Eigen::Isometry3d>& last,
+                   const PnpPoseGate& gate) {
+  if (predictedByImu && gate.imu_max_m > 0 && gate.imu_max_deg > 0)
+    return withinStep(predicted.inverse() * tracked, gate.imu_max_m, gate.imu_max_deg);
+  return withinStep(predicted.inverse() * tracked, gate.max_m, gate.max_deg) ||
+         (last && withinStep(last->inverse() * tracked, gate.max_m, gate.max_deg));
+}
 
 std::optional<TrackedPose> trackFramePose(
     const PinholeCamera& camera,

@@ -38,6 +38,26 @@ TEST(KeyframeImu, PreintegrationsSpanTheKeyframeIntervals) {
   EXPECT_NEAR(Eigen::AngleAxisd(pre->gamma()).angle(), 0.1 - 0.0333, 1e-9);
 }
 
+// While samples are missing (an IMU gap, which shows only once they resume) there is no
+// prediction and no interval: holding the last sample over a second predicted a wrong motion,
+// and the PnP gate then refused the right poses (bench/estimator_faults.sh: 2 window restarts).
+TEST(KeyframeImu, NoPredictionOrIntervalPastTheLastSampleByMoreThanTheGap) {
+  KeyframeImu imu(ImuNoise{}, 0.05);
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  imu.addSamples(samples(0.0, 0.0301, 200, 1.0), 0);
+  imu.cutAt(0.0333, zero, zero);
+  imu.addSamples(samples(0.035, 0.1, 200, 1.0), 1);
+  EXPECT_TRUE(imu.peekAt(0.12)) << "20 ms past the last sample: held";
+  EXPECT_FALSE(imu.peekAt(0.2)) << "100 ms past: samples missing";
+  EXPECT_FALSE(imu.cutAt(0.3, zero, zero)) << "a keyframe inside the gap closes no interval";
+  EXPECT_FALSE(imu.peekAt(0.31)) << "nor does the next one predict";
+  imu.addSamples(samples(1.0, 1.1, 200, 1.0), 2);  // the samples resume
+  EXPECT_EQ(imu.gaps(), 1u);
+  EXPECT_FALSE(imu.cutAt(1.1, zero, zero)) << "the interval over the gap is broken";
+  imu.addSamples(samples(1.105, 1.2, 200, 1.0), 3);
+  EXPECT_TRUE(imu.cutAt(1.2, zero, zero)) << "and the next one whole again";
+}
+
 TEST(KeyframeImu, NonFiniteAndOutOfOrderSamplesNameTheFrame) {
   KeyframeImu imu(ImuNoise{});
   auto s = samples(0.0, 0.01, 200, 0.0);

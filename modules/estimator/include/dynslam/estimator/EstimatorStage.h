@@ -59,6 +59,10 @@ struct EstimatorOptions : mrpt::config::CLoadableOptions {
   /// A PnP pose farther than this from the constant-velocity prediction is taken for a wrong
   /// RANSAC consensus and not used (m, deg).
   double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
+  /// With the window visual-inertial, a PnP pose farther than this from the IMU's prediction
+  /// is not used and the prediction is the frame's pose (m, deg; 0: off, the looser bound above
+  /// only; not the method). See PnpPoseGate (FramePoseTracker.h).
+  double pnp_max_imu_correction_m = 0.0, pnp_max_imu_correction_deg = 0.0;
   /// Failure detection: estimates beyond these restart the window (m/s, rad/s, m/s^2).
   double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
   int min_keyframe_features = 15;  ///< fewer static features: no keyframe, the pose is predicted
@@ -94,7 +98,8 @@ class EstimatorStage : public core::Stage {
   void startWindow(const core::Frame& frame);
   /// The body pose this frame is expected at: IMU propagation from the last keyframe when the
   /// window is visual-inertial, else constant velocity from the last two frames.
-  Eigen::Isometry3d predictBody(double t, Eigen::Vector3d* velocity) const;
+  /// `fromImu` (optional): set to whether the IMU propagation gave it.
+  Eigen::Isometry3d predictBody(double t, Eigen::Vector3d* velocity, bool* fromImu = nullptr) const;
   void tryImuInitialization(double t);
   /// use_gnss: hands the window the GNSS targets of keyframes whose fixes have arrived.
   void anchorToGnss(double t);

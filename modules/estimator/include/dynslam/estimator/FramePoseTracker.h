@@ -24,6 +24,27 @@ struct TrackedPose {
   int candidates = 0;  ///< features with a landmark
 };
 
+/// Bounds on how far a frame's PnP pose may lie from what was expected of it (m, deg).
+struct PnpPoseGate {
+  /// From the motion prediction or from the last pose: farther is a wrong RANSAC consensus.
+  double max_m = 0.3, max_deg = 20.0;
+  /// From an IMU prediction (0: off, the bounds above only). Not the method: where a walker
+  /// filling the view passes for static, PnP follows it by 0.1-0.2 m a frame, while the IMU's
+  /// prediction over a keyframe interval errs by millimetres.
+  double imu_max_m = 0.0, imu_max_deg = 0.0;
+};
+
+/// Finite, translated by at most `max_m` and turned by at most `max_deg`.
+bool withinStep(const Eigen::Isometry3d& step, double max_m, double max_deg);
+
+/// Whether a frame takes its PnP body pose `tracked`: with an IMU prediction and the gate's IMU
+/// bounds set, when within them of `predicted`; otherwise when within the loose bounds of
+/// `predicted` or of `last` (the constant-velocity prediction extrapolates one bad step frame
+/// after frame, the last pose does not).
+bool acceptPnpPose(const Eigen::Isometry3d& tracked, const Eigen::Isometry3d& predicted,
+                   bool predictedByImu, const std::optional<Eigen::Isometry3d>& last,
+                   const PnpPoseGate& gate);
+
 /// `landmarks`: world positions by feature id; `pixels`: this frame's features by id.
 std::optional<TrackedPose> trackFramePose(
     const PinholeCamera& camera, const std::vector<std::pair<std::int64_t, Eigen::Vector3d>>& landmarks,

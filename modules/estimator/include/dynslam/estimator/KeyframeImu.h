@@ -30,12 +30,14 @@ class KeyframeImu {
   std::size_t gaps() const { return gaps_; }
 
   /// Ends the current preintegration at time t (null if none had started, the first keyframe,
-  /// or if a gap broke it) and starts the next one there, linearised at the biases (ba, bg).
+  /// if a gap broke it, or if t lies more than max_gap past the last sample) and starts the
+  /// next one there, linearised at the biases (ba, bg).
   std::shared_ptr<ImuPreintegration> cutAt(double t, const Eigen::Vector3d& ba,
                                            const Eigen::Vector3d& bg);
 
-  /// The current preintegration extended to time t (a copy; null before the first keyframe or
-  /// when a gap broke it).
+  /// The current preintegration extended to time t (a copy; null before the first keyframe,
+  /// when a gap broke it, or when t lies more than max_gap past the last sample: samples are
+  /// missing, and holding the last one over the gap predicts a wrong motion).
   std::shared_ptr<ImuPreintegration> peekAt(double t) const;
 
  private:
