@@ -152,7 +152,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     const auto gyro = gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu,
                                          frame.T_body_camera);
     // Only the pairs outside every box (background_outside_boxes; else none is boxed). Too few
-    // of them and the estimator's constant velocity stands in: the pairs inside boxes but
+    // of them and CameraMotionEstimator's constant velocity stands in: the pairs inside boxes but
     // outside masks, which this fell back to before, are the walkers' unmasked parts when
     // people fill the view (indoor_people_low with injected faults: 2-2.5 cm per frame of
     // false depth motion for five frames, a standing person read 0.24 m/s and turned dynamic).
