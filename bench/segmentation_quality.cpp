@@ -31,7 +31,6 @@
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Median.h>
 #include <dynslam/detection/GroundTruthDetector.h>
-#include <dynslam/segmentation/FloorPlane.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/sim/MakeSequence.h>
@@ -250,8 +249,7 @@ class PerceptionStages {
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,
                const segmentation::DepthThresholdSegmenter& segmenter, size_t every,
                bool visibleBoxes, double minVisible, FailureDumper& dumper,
-               const std::optional<core::IniConfig>& pipeline, std::ostream* cases,
-               const segmentation::SegmentationStage& floorStage) {
+               const std::optional<core::IniConfig>& pipeline, std::ostream* cases) {
   sim::ScenarioOptions options;
   options.load(core::IniConfig::fromFile(ini, overrides));
   const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
@@ -280,9 +278,8 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       truths.push_back(&o);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    auto masks = stages ? stages->masks(f, detections, sequence->camera())
-                        : segmenter.segment(f.image.depth, detections);
-    if (!stages) floorStage.dropFloor(masks, detections, f.image.depth, sequence->camera());
+    const auto masks = stages ? stages->masks(f, detections, sequence->camera())
+                              : segmenter.segment(f.image.depth, detections);
     if (i % every != 0) continue;
     s.ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
@@ -391,7 +388,7 @@ int main(int argc, char** argv) {
     }
     for (const auto& ini : inis)
       benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper,
-                pipeline, cases.is_open() ? &cases : nullptr, stage);
+                pipeline, cases.is_open() ? &cases : nullptr);
     dumper.write();
     return 0;
   });

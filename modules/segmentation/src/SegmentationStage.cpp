@@ -1,7 +1,5 @@
 #include "dynslam/segmentation/SegmentationStage.h"
 
-#include "dynslam/segmentation/FloorPlane.h"
-
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <stdexcept>
@@ -44,8 +42,6 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.object_cluster = core::readKeyword(c, s, "object_cluster", p.object_cluster, kClusters);
   p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
   boxes = core::readKeyword(c, s, "boxes", boxes, kBoxes);
-  floor_margin_rigid = c.read_double(s, "floor_margin_rigid", floor_margin_rigid);
-  floor_margin_nonrigid = c.read_double(s, "floor_margin_nonrigid", floor_margin_nonrigid);
 }
 
 void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -75,42 +71,15 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       "tracks no detection took this frame (list the stage again after Tracking); "
       "tracked_detections: the detections again, each object cluster chosen by its track's "
       "depth (after Tracking; not the method)");
-  core::writeKey(c, s, "floor_margin_rigid", floor_margin_rigid,
-                 "m; > 0: rigid objects' (cars') mask pixels less than this above the floor "
-                 "plane fitted to the lower half of the depth image are dropped (not the method)");
-  core::writeKey(c, s, "floor_margin_nonrigid", floor_margin_nonrigid,
-                 "m; the same for non-rigid objects (people; their shoes go too)");
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
   try {
     core::loadOptionsStrict(options_, cfg, section);
-    for (const auto& [key, value] :
-         {std::pair{"floor_margin_rigid", options_.floor_margin_rigid},
-          std::pair{"floor_margin_nonrigid", options_.floor_margin_nonrigid}})
-      if (!(value >= 0))
-        throw std::invalid_argument(std::string(key) + " = " + std::to_string(value) +
-                                    ": must be >= 0 (m; 0: off)");
     segmenter_ = DepthThresholdSegmenter(options_.params);
   } catch (const std::invalid_argument& e) {
     throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
   }
-}
-
-void SegmentationStage::dropFloor(std::vector<core::ObjectMask>& masks,
-                                  const std::vector<core::Detection>& boxes, const cv::Mat& depth,
-                                  const core::CameraIntrinsics& intrinsics) const {
-  const auto margin = [&](size_t k) {
-    return boxes[k].model == core::MotionModel::Rigid ? options_.floor_margin_rigid
-                                                      : options_.floor_margin_nonrigid;
-  };
-  bool any = false;
-  for (size_t k = 0; k < masks.size() && k < boxes.size(); ++k) any = any || margin(k) > 0;
-  if (!any) return;
-  const auto floor = fitFloorPlane(depth, intrinsics);
-  if (!floor) return;
-  for (size_t k = 0; k < masks.size() && k < boxes.size(); ++k)
-    if (margin(k) > 0) dropFloorPixels(masks[k], depth, intrinsics, *floor, margin(k));
 }
 
 void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
@@ -130,7 +99,6 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
   }
   requireDepth(frame, boxes.size(), "predicted boxes");
   auto masks = segmenter_.segment(frame.depth, boxes);
-  dropFloor(masks, boxes, frame.depth, frame.intrinsics);
   for (size_t k = 0; k < masks.size(); ++k) {
     masks[k].detection = -1;
     masks[k].track = trackOf[k];
@@ -152,7 +120,6 @@ void SegmentationStage::segmentTrackedDetections(core::Frame& frame) const {
     }
   }
   auto masks = segmenter_.segment(frame.depth, frame.detections, expected);
-  dropFloor(masks, frame.detections, frame.depth, frame.intrinsics);
   for (size_t i = 0; i < masks.size(); ++i) masks[i].track = trackOf[i];
   // The detections' masks are replaced; masks of predicted boxes (detection -1) stay.
   for (const auto& m : frame.object_masks)
@@ -168,7 +135,6 @@ void SegmentationStage::process(core::Frame& frame) {
   } else {
     requireDepth(frame, frame.detections.size(), "detections");
     frame.object_masks = segmenter_.segment(frame.depth, frame.detections);
-    dropFloor(frame.object_masks, frame.detections, frame.depth, frame.intrinsics);
   }
   ++frames_;
   for (const auto& m : frame.object_masks) {

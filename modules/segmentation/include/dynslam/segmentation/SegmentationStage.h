@@ -17,9 +17,6 @@
 //    took it (DepthThresholdSegmenter::segment's expectedDepth); the masks keep their tracks.
 //    With Tracking.alternative_depth a track may take a detection by the cluster the
 //    segmentation did not choose; this makes the mask follow the track.
-// floor_margin_rigid / floor_margin_nonrigid > 0 (not the method; FloorPlane.h) drop from the
-// masks of rigid / non-rigid objects the pixels on the floor or road plane fitted to the frame's
-// depth image.
 #include <dynslam/core/Stage.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 
@@ -35,12 +32,6 @@ enum class SegmentedBoxes { Detections, PredictedTracks, TrackedDetections };
 struct SegmentationOptions : mrpt::config::CLoadableOptions {
   DepthThresholdParams params;
   SegmentedBoxes boxes = SegmentedBoxes::Detections;
-  /// m; > 0: pixels of rigid (cars) / non-rigid (people) objects' masks less than this above
-  /// the frame's floor plane are dropped (not the method; 0: off). See FloorPlane.h: a car's
-  /// depth band (e = 3 m) takes in a wedge of road; a person's (0.5 m) only the floor at the
-  /// feet, and their own shoes go with it (indoor_people_high mask IoU 0.861 -> 0.841 at 0.1).
-  double floor_margin_rigid = 0.0;
-  double floor_margin_nonrigid = 0.0;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
@@ -53,11 +44,6 @@ class SegmentationStage : public core::Stage {
   void finish() override;
 
   const SegmentationOptions& options() const { return options_; }
-
-  /// Drops the floor's pixels from `masks`, the masks of `boxes` in order, where the box's
-  /// motion model has a floor margin > 0 and `depth` shows a floor (FloorPlane.h).
-  void dropFloor(std::vector<core::ObjectMask>& masks, const std::vector<core::Detection>& boxes,
-                 const cv::Mat& depth, const core::CameraIntrinsics& intrinsics) const;
 
  private:
   SegmentationOptions options_;
