@@ -75,7 +75,7 @@ struct Scores {
   size_t behind[3] = {0, 0, 0}, inFront[3] = {0, 0, 0};  // d_t off the person by more than e
   std::vector<double> depthErr[3], torsoErr[3];          // |d_t - truth| / truth, %
   std::vector<double> ms, objects;                       // per frame
-  size_t invalid = 0, people = 0, outOfRange = 0;
+  size_t invalid = 0, seen = 0, outOfRange = 0;  // seen: objects of the kind, any visibility
   // Pixels of the scored people (>= 50 % visible): visible, and where the missed ones went;
   // mask pixels that are not the person's.
   size_t visible = 0, missedNoDepth = 0, missedOutsideRange = 0, missedToOther = 0;
@@ -147,7 +147,7 @@ void printTable(const Scores& s) {
   std::printf(
       "  people seen: %zu; with no depth on any visible pixel (beyond range, not scored): "
       "%zu; masks without enough depth: %zu\n",
-      s.people, s.outOfRange, s.invalid);
+      s.seen, s.outOfRange, s.invalid);
   std::vector<double> three;
   for (size_t i = 0; i < s.ms.size(); ++i)
     if (s.objects[i] == 3) three.push_back(s.ms[i]);
@@ -190,7 +190,7 @@ void printCars(const Scores& s) {
   std::printf(
       "  cars seen %zu: mask IoU (>= 50 %% visible, %zu) mean %.3f, median %.3f, precision %.3f, "
       "recall %.3f; beyond range %zu, masks without enough depth %zu\n",
-      s.people, s.iou.size(), mean(s.iou), dynslam::core::upperMedian(s.iou), mean(s.precision),
+      s.seen, s.iou.size(), mean(s.iou), dynslam::core::upperMedian(s.iou), mean(s.precision),
       mean(s.recall), s.outOfRange, s.invalid);
   const double a = std::max<size_t>(1, s.maskObject);
   std::printf("    car mask pixels not the car: %.1f %% background, %.1f %% another object\n",
@@ -212,6 +212,8 @@ class PerceptionStages {
     if (retrack_.options().boxes != segmentation::SegmentedBoxes::TrackedDetections)
       throw core::UsageError("--pipeline: [Retrack] boxes must be tracked_detections");
   }
+  /// The depth of the track that took each detection of the last frame (0: none).
+  const std::vector<double>& trackDepth() const { return trackDepth_; }
   /// The detections' masks (one per detection, in order) at the end of the three stages.
   std::vector<core::ObjectMask> masks(const sim::SimFrame& f,
                                       const std::vector<core::Detection>& detections,
@@ -240,10 +242,6 @@ class PerceptionStages {
   segmentation::SegmentationStage segmentation_, retrack_;
   tracking::TrackingStage tracking_;
   std::vector<double> trackDepth_;
-
- public:
-  /// The depth of the track that took each detection of the last frame (0: none).
-  const std::vector<double>& trackDepth() const { return trackDepth_; }
 };
 
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,
@@ -290,7 +288,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       const auto& o = *truths[k];
       if (o.category != "person" && o.category != "car") continue;
       Scores& sc = o.category == "car" ? cars : s;  // frame figures (ms, objects) stay in s
-      ++sc.people;
+      ++sc.seen;
       const auto& m = masks[k];
       // The person's true depth; none when all its visible pixels lie beyond the sensor's range
       // (no mask can hold them: such people are counted apart and not scored).
@@ -337,7 +335,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
               sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
               stages ? "; masks after Segmentation, Tracking and Retrack (--pipeline)" : "");
   printTable(s);
-  if (cars.people > 0) printCars(cars);
+  if (cars.seen > 0) printCars(cars);
   std::printf("\n");
 }
 

@@ -28,10 +28,8 @@ void KeyframeImu::addSamples(const std::vector<core::ImuSample>& samples, std::s
 std::shared_ptr<ImuPreintegration> KeyframeImu::cutAt(double t, const Eigen::Vector3d& ba,
                                                       const Eigen::Vector3d& bg) {
   if (!last_) return nullptr;
-  // More than max_gap after the last sample the samples are missing (a gap that shows only once
-  // they resume): nothing to close the interval with.
-  const bool missing = t - last_->t > max_gap_;
-  std::shared_ptr<ImuPreintegration> done = broken_ || missing ? nullptr : current_;
+  // Samples missing at t: nothing to close the interval with.
+  std::shared_ptr<ImuPreintegration> done = broken_ || missingAt(t) ? nullptr : current_;
   if (done && t > current_end_) done->push(t - current_end_, last_->acc, last_->gyr);
   broken_ = false;
   current_ = std::make_shared<ImuPreintegration>(last_->acc, last_->gyr, ba, bg, noise_);
@@ -40,10 +38,7 @@ std::shared_ptr<ImuPreintegration> KeyframeImu::cutAt(double t, const Eigen::Vec
 }
 
 std::shared_ptr<ImuPreintegration> KeyframeImu::peekAt(double t) const {
-  // Beyond max_gap past the last sample the IMU says nothing about the motion (samples missing:
-  // the gap shows only once they resume); holding the last sample for up to a second gave the
-  // frames of an IMU gap a prediction that pulled their poses away.
-  if (!current_ || broken_ || t - last_->t > max_gap_) return nullptr;
+  if (!current_ || broken_ || missingAt(t)) return nullptr;
   auto copy = std::make_shared<ImuPreintegration>(*current_);
   if (t > current_end_) copy->push(t - current_end_, last_->acc, last_->gyr);
   return copy;

@@ -66,13 +66,8 @@ std::optional<RegistrationResult> CameraMotionEstimator::translationWithRotation
   };
   auto support = [](const std::vector<int>& in) { return in.size(); };
   std::vector<int> best = inliersOfT(previous_.t);
-  Eigen::Vector3d med;
-  for (int axis = 0; axis < 3; ++axis) {
-    std::vector<double> c(d.size());
-    for (size_t i = 0; i < d.size(); ++i) c[i] = d[i](axis);
-    med(axis) = core::upperMedian(std::move(c));
-  }
-  if (auto in = inliersOfT(med); support(in) > support(best)) best = std::move(in);
+  if (auto in = inliersOfT(core::componentwiseUpperMedian(d)); support(in) > support(best))
+    best = std::move(in);
   std::uniform_int_distribution<size_t> pick(0, d.size() - 1);
   for (int it = 0; it < params_.ransac.iterations; ++it)  // one pair fixes a translation
     if (auto in = inliersOfT(d[pick(rng_)]); support(in) > support(best)) best = std::move(in);
@@ -89,16 +84,6 @@ std::optional<RegistrationResult> CameraMotionEstimator::translationWithRotation
   }
   lastSigma_ = std::sqrt(swr / sw / double(r.inliers.size()));
   return r;
-}
-
-Eigen::Vector3d CameraMotionEstimator::recentTranslation() const {
-  Eigen::Vector3d m;
-  std::vector<double> c(recent_.size());
-  for (int axis = 0; axis < 3; ++axis) {
-    for (size_t i = 0; i < recent_.size(); ++i) c[i] = recent_[i](axis);
-    m(axis) = core::upperMedianInPlace(c);
-  }
-  return m;
 }
 
 CameraMotionEstimate CameraMotionEstimator::estimate(
@@ -141,7 +126,8 @@ CameraMotionEstimate CameraMotionEstimator::estimate(
     }
     e.translation_sigma = lastSigma_;
   } else if (gyro_rotation) {
-    e.motion = {*gyro_rotation, recent_.empty() ? previous_.t : recentTranslation()};
+    e.motion = {*gyro_rotation,
+                recent_.empty() ? previous_.t : core::componentwiseUpperMedian(recent_)};
     e.source = CameraMotionSource::ImuRotationConstantVelocity;
   } else {
     e.motion = previous_;

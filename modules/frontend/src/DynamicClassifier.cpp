@@ -17,13 +17,7 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
     for (const auto& v : velocities) sum += v.norm();
     return sum / double(velocities.size());
   }
-  Eigen::Vector3d m;
-  std::vector<double> c(velocities.size());
-  for (int axis = 0; axis < 3; ++axis) {
-    for (size_t i = 0; i < velocities.size(); ++i) c[i] = velocities[i](axis);
-    m(axis) = core::upperMedianInPlace(c);
-  }
-  return m.norm();
+  return core::componentwiseUpperMedian(velocities).norm();
 }
 
 /// The median depth of the valid pixels within `half` px of `pixel` that lie on the surface of

@@ -3,6 +3,8 @@
 // values (for an even count the upper of the two middle ones), found by a partial sort. One
 // definition, so a figure in summary.json, a bench and a test mean the same thing.
 // (evaluation::computeStatistics keeps evo's averaged median for APE/RPE.)
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <vector>
 
@@ -19,5 +21,19 @@ inline double upperMedianInPlace(std::vector<double>& values) {
 
 /// 0 for no values.
 inline double upperMedian(std::vector<double> values) { return upperMedianInPlace(values); }
+
+/// The upper median of each coordinate of `vectors` (any container of Eigen::Vector3d): robust
+/// where one vector in a few is far off. Zero for none.
+template <class Vectors>
+Eigen::Vector3d componentwiseUpperMedian(const Vectors& vectors) {
+  Eigen::Vector3d m;
+  std::vector<double> c(vectors.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    size_t i = 0;
+    for (const auto& v : vectors) c[i++] = v(axis);
+    m(axis) = upperMedianInPlace(c);
+  }
+  return m;
+}
 
 }  // namespace dynslam::core

@@ -41,6 +41,10 @@ class KeyframeImu {
   std::shared_ptr<ImuPreintegration> peekAt(double t) const;
 
  private:
+  /// More than max_gap past the last sample: the samples are missing (a gap shows only once
+  /// they resume), and holding the last one over it gave the frames of an IMU gap a prediction
+  /// that pulled their poses away.
+  bool missingAt(double t) const { return last_ && t - last_->t > max_gap_; }
   struct Sample {
     double t;
     Eigen::Vector3d acc, gyr;

@@ -97,9 +97,6 @@ class CameraMotionEstimator {
                                                             const std::vector<Eigen::Vector3d>& q,
                                                             const Eigen::Matrix3d& R);
 
-  /// Component-wise median of recent_ (not empty).
-  Eigen::Vector3d recentTranslation() const;
-
   CameraMotionParams params_;
   std::mt19937 rng_;
   double lastSigma_ = 0;  ///< translation_sigma of the last registration
