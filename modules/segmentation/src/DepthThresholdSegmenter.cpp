@@ -284,6 +284,26 @@ void DepthThresholdSegmenter::resolveOverlaps(std::vector<core::ObjectMask>& mas
     resolveByConnectivity(masks, depth);
   else
     resolveMutualOcclusion(masks);
+  if (params_.object_depth == ObjectDepth::MaskMedian)
+    for (auto& m : masks)
+      if (const double z = maskMedianDepth(m, depth, 2); z > 0) m.d_t = z;
+}
+
+double maskMedianDepth(const core::ObjectMask& mask, const cv::Mat& depth, int stride) {
+  if (!mask.valid || mask.mask.empty()) return 0;
+  stride = std::max(1, stride);
+  std::vector<float> z;
+  z.reserve(size_t(mask.roi.area() / (stride * stride)) + 1);
+  for (int y = 0; y < mask.roi.height; y += stride) {
+    const uint8_t* in = mask.mask.ptr<uint8_t>(y);
+    const float* d = depth.ptr<float>(mask.roi.y + y) + mask.roi.x;
+    for (int x = 0; x < mask.roi.width; x += stride)
+      if (in[x] && d[x] > 0 && std::isfinite(d[x])) z.push_back(d[x]);
+  }
+  if (z.empty()) return 0;
+  const auto mid = z.begin() + z.size() / 2;
+  std::nth_element(z.begin(), mid, z.end());
+  return *mid;
 }
 
 void resolveByClosestDepth(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) {

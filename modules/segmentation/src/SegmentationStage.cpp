@@ -15,6 +15,8 @@ constexpr core::Keyword<OverlapRule> kOverlapRules[] = {
     {"nearer", OverlapRule::Nearer},
     {"closest_depth", OverlapRule::ClosestDepth},
     {"connected", OverlapRule::Connected}};
+constexpr core::Keyword<ObjectDepth> kObjectDepths[] = {{"cluster_mean", ObjectDepth::ClusterMean},
+                                                        {"mask_median", ObjectDepth::MaskMedian}};
 constexpr core::Keyword<SegmentedBoxes> kBoxes[] = {
     {"detections", SegmentedBoxes::Detections},
     {"predicted_tracks", SegmentedBoxes::PredictedTracks},
@@ -41,6 +43,7 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.min_valid_fraction = c.read_double(s, "min_valid_fraction", p.min_valid_fraction);
   p.object_cluster = core::readKeyword(c, s, "object_cluster", p.object_cluster, kClusters);
   p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
+  p.object_depth = core::readKeyword(c, s, "object_depth", p.object_depth, kObjectDepths);
   boxes = core::readKeyword(c, s, "boxes", boxes, kBoxes);
 }
 
@@ -65,6 +68,10 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
       "the object whose d_t is closest to the pixel's depth; connected = the object whose "
       "depth-continuous surface reaches it (both not the method)");
+  core::writeKey(
+      c, s, "object_depth", std::string(core::wordOf(p.object_depth, kObjectDepths)),
+      "the d_t each mask reports: cluster_mean = the object's 2-means cluster (method.md); "
+      "mask_median = the median depth of the final mask (not the method)");
   core::writeKey(
       c, s, "boxes", std::string(core::wordOf(boxes, kBoxes)),
       "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "

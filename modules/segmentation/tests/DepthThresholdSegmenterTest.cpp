@@ -170,3 +170,44 @@ TEST(DepthThresholdSegmenter, TheLargerClusterVariantTakesTheMajorityOfTheCandid
   EXPECT_EQ(larger.d_o, 0.0) << "nothing in front of the pole";
   EXPECT_DOUBLE_EQ(larger.t_min, 0.5);
 }
+
+// object_depth = mask_median (not the method): d_t is the median depth of the final mask, not
+// the mean of the candidate box's cluster. A person-sized box on one body whose upper 60 % is
+// at 2.0 m and lower 40 % at 2.4 m (a leg stepping back): M's rows 20-59 hold 2.0 m down to
+// row 47, so 2-means splits 2.0 / 2.4, and the method's far cluster says 2.4 m; all of the
+// box is within e of it, and most of the mask is at 2.0 m.
+TEST(DepthThresholdSegmenter, MaskMedianDepthIsTheMedianOfTheFinalMask) {
+  cv::Mat depth(120, 160, CV_32FC1, cv::Scalar(0.0f));
+  const cv::Rect box(40, 0, 40, 80);
+  depth(cv::Rect(40, 0, 40, 48)).setTo(2.0f);
+  depth(cv::Rect(40, 48, 40, 32)).setTo(2.4f);
+  segmentation::DepthThresholdParams p;
+  const auto method = DepthThresholdSegmenter(p).segment(depth, {detection(box)});
+  ASSERT_EQ(method.size(), 1u);
+  EXPECT_NEAR(method[0].d_t, 2.4, 1e-6) << "the far cluster's mean";
+  p.object_depth = segmentation::ObjectDepth::MaskMedian;
+  const auto median = DepthThresholdSegmenter(p).segment(depth, {detection(box)});
+  ASSERT_EQ(median.size(), 1u);
+  EXPECT_EQ(cv::countNonZero(median[0].mask), 40 * 80) << "the mask itself is the method's";
+  EXPECT_NEAR(median[0].d_t, 2.0, 1e-6) << "60 % of the mask is at 2.0 m";
+  EXPECT_EQ(median[0].t_min, method[0].t_min) << "the thresholds stay the method's";
+  EXPECT_EQ(median[0].t_max, method[0].t_max);
+}
+
+TEST(DepthThresholdSegmenter, MaskMedianDepthSkipsPixelsWithoutDepthAndEmptyMasks) {
+  cv::Mat depth(10, 10, CV_32FC1, cv::Scalar(3.0f));
+  depth(cv::Rect(0, 0, 10, 4)).setTo(1.0f);
+  depth(cv::Rect(0, 8, 10, 2)).setTo(0.0f);  // no depth: never counted
+  core::ObjectMask m;
+  m.roi = cv::Rect(0, 0, 10, 10);
+  m.mask = cv::Mat(10, 10, CV_8UC1, cv::Scalar(255));
+  m.valid = true;
+  EXPECT_EQ(segmentation::maskMedianDepth(m, depth, 1), 3.0f)
+      << "40 px at 1 m, 40 at 3 m: upper median";
+  m.mask(cv::Rect(0, 4, 10, 6)).setTo(0);
+  EXPECT_EQ(segmentation::maskMedianDepth(m, depth, 1), 1.0f);
+  m.mask.setTo(0);
+  EXPECT_EQ(segmentation::maskMedianDepth(m, depth, 1), 0.0) << "empty: 0, the caller keeps d_t";
+  m.valid = false;
+  EXPECT_EQ(segmentation::maskMedianDepth(m, depth, 1), 0.0);
+}

@@ -41,6 +41,12 @@ TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) 
       << "names the section and the file";
   stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = larger\n"), "S");
   EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Larger);
+  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::ClusterMean)
+      << "the method's d_t unless asked";
+  stage.configure(core::IniConfig::fromText("[S]\nobject_depth = mask_median\n"), "S");
+  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::MaskMedian);
+  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_depth = mean\n"), "S"),
+               core::ConfigError);
   try {
     stage.configure(core::IniConfig::fromText("[S]\nm = 1\n", "x.ini"), "S");
     FAIL() << "m = 1 accepted";

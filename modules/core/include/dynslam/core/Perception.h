@@ -35,7 +35,9 @@ struct ObjectMask {
   int track = -1;
   cv::Rect roi;        ///< the detection box in whole pixels, clipped; `mask` covers exactly it
   cv::Mat mask;        ///< CV_8UC1, roi-sized, 255 = object pixel
-  double d_t = 0;      ///< object depth, m (far cluster of the candidate box)
+  /// Object depth, m: the far cluster of the candidate box (or, with [Segmentation]
+  /// object_depth = mask_median, the median depth of the final mask).
+  double d_t = 0;
   double d_o = 0;      ///< occluder depth, m (near cluster); 0 when no occluder was found
   double d_b = 0;      ///< background depth, m (upper half of the box, three-sigma filtered)
   /// The candidate box's other 2-means cluster, m: the depth the object would have had if the
