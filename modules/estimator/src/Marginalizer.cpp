@@ -66,8 +66,17 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
       (side == 0 ? m : n) += columns[b].tangent;
     }
 
+  // H = sum J^T J and g = sum J^T r, accumulated block by block: each factor's Jacobian spans
+  // only its own blocks (a few columns of the m + n), and a dense product over all the columns
+  // made this the estimator's largest cost with 300 features (53 ms per keyframe on
+  // outdoor_street_high, where the Schur complement below takes 4).
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + n, m + n);
   Eigen::VectorXd g = Eigen::VectorXd::Zero(m + n);
+  struct Span {
+    size_t block = 0;                       // index among the factor's blocks
+    int column = 0, width = 0, offset = 0;  // in the factor's compact Jacobian; in H
+  };
+  std::vector<Span> spans;
   for (const auto& f : factors_) {
     const int rows = f.cost->num_residuals();
     Eigen::VectorXd r(rows);
@@ -78,15 +87,24 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
     for (auto& j : jac) jacPtr.push_back(j.data());
     if (!f.cost->Evaluate(f.blocks.data(), r.data(), jacPtr.data()))
       throw std::runtime_error("Marginalizer: a factor failed to evaluate");
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, m + n);
+    spans.clear();
+    int width = 0;
     for (size_t k = 0; k < f.blocks.size(); ++k) {
       if (constants_.count(f.blocks[k])) continue;
       const Column& c = columns[f.blocks[k]];
-      J.middleCols(c.offset, c.tangent) = jac[k].leftCols(c.tangent);  // tangent part
+      spans.push_back({k, width, c.tangent, c.offset});
+      width += c.tangent;
     }
+    Eigen::MatrixXd J(rows, width);  // the tangent parts of the factor's own blocks
+    for (const Span& a : spans) J.middleCols(a.column, a.width) = jac[a.block].leftCols(a.width);
     if (f.loss) applyLoss(*f.loss, r, J);
-    H.noalias() += J.transpose() * J;
-    g.noalias() += J.transpose() * r;
+    for (const Span& a : spans) {
+      const auto Ja = J.middleCols(a.column, a.width);
+      g.segment(a.offset, a.width).noalias() += Ja.transpose() * r;
+      for (const Span& b : spans)
+        H.block(a.offset, b.offset, a.width, b.width).noalias() +=
+            Ja.transpose() * J.middleCols(b.column, b.width);
+    }
   }
 
   Prior prior;
