@@ -60,6 +60,8 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   dynamic_handling = core::readKeyword(c, s, "dynamic_handling", dynamic_handling, kHandlings);
   nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
   rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
+  object_factors_wait_for_imu =
+      c.read_bool(s, "object_factors_wait_for_imu", object_factors_wait_for_imu);
   drop_moving_landmarks = c.read_bool(s, "drop_moving_landmarks", drop_moving_landmarks);
   use_gnss = c.read_bool(s, "use_gnss", use_gnss);
   gnss.uere_horizontal_m = c.read_double(s, "gnss_uere_horizontal", gnss.uere_horizontal_m);
@@ -147,6 +149,9 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "with full: NonRigid features as constant-velocity world points (r_D)");
   core::writeKey(c, s, "rigid_factors", rigid_factors,
                  "with full: Rigid features as points of their object, object poses (r_O, r_om)");
+  core::writeKey(c, s, "object_factors_wait_for_imu", object_factors_wait_for_imu,
+                 "with full and an IMU: the object factors start once the IMU is initialized "
+                 "(dynamic features handled as with remove until then; not in the method)");
   core::writeKey(c, s, "use_gnss", use_gnss,
                  "GNSS position factors on keyframes (ENU from the first fix, aligned to the world "
                  "once the path spans gnss_align_span)");

@@ -107,17 +107,20 @@ void EstimatorStage::tryImuInitialization(double t) {
 
 void EstimatorStage::process(core::Frame& frame) {
   if (frames_++ == 0) first_t_ = frame.t;
-  RoutedFeatures routed = routeFeatures(frame.features, options_.dynamic_handling,
-                                        options_.nonrigid_factors, options_.rigid_factors);
-  std::vector<FeatureObservation>& observations = routed.landmarks;
-  const std::map<std::int64_t, Eigen::Vector2d>& pixels = routed.pixels;
-  if (window_ && options_.drop_moving_landmarks)
-    landmarks_dropped_ += window_->dropLandmarks(routed.moving);
   if (options_.use_imu && !imu_) {
     for (const auto& s : frame.imu)
       if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
   }
   if (imu_) imu_->addSamples(frame.imu, frame.index);
+  const bool objectFactors =
+      !(options_.object_factors_wait_for_imu && imu_ && !(window_ && window_->usesImu()));
+  RoutedFeatures routed = routeFeatures(frame.features, options_.dynamic_handling,
+                                        objectFactors && options_.nonrigid_factors,
+                                        objectFactors && options_.rigid_factors);
+  std::vector<FeatureObservation>& observations = routed.landmarks;
+  const std::map<std::int64_t, Eigen::Vector2d>& pixels = routed.pixels;
+  if (window_ && options_.drop_moving_landmarks)
+    landmarks_dropped_ += window_->dropLandmarks(routed.moving);
   if (options_.use_gnss && !gnss_ && !frame.gnss.empty())
     gnss_ = std::make_unique<GnssAnchor>(options_.gnss);
   if (gnss_) gnss_->addFixes(frame.gnss);
