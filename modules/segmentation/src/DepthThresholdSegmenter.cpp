@@ -3,6 +3,8 @@
 #include "dynslam/segmentation/DepthSampling.h"
 #include "dynslam/segmentation/TwoMeans.h"
 
+#include <dynslam/core/Median.h>
+
 #include <opencv2/core.hpp>
 
 #include <algorithm>
@@ -300,10 +302,7 @@ double maskMedianDepth(const core::ObjectMask& mask, const cv::Mat& depth, int s
     for (int x = 0; x < mask.roi.width; x += stride)
       if (in[x] && d[x] > 0 && std::isfinite(d[x])) z.push_back(d[x]);
   }
-  if (z.empty()) return 0;
-  const auto mid = z.begin() + z.size() / 2;
-  std::nth_element(z.begin(), mid, z.end());
-  return *mid;
+  return core::upperMedianInPlace(z);
 }
 
 void resolveByClosestDepth(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) {

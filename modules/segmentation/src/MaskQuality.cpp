@@ -1,5 +1,6 @@
 #include "dynslam/segmentation/MaskQuality.h"
 
+#include <dynslam/core/Median.h>
 #include <opencv2/core.hpp>
 
 #include <algorithm>
@@ -26,10 +27,7 @@ double visibleMedianDepth(const cv::Mat& depth, const cv::Mat& label, uint16_t i
     for (int u = 0; u < label.cols; ++u)
       if (l[u] == id && d[u] > 0) z.push_back(d[u]);
   }
-  if (z.empty()) return 0;
-  auto mid = z.begin() + z.size() / 2;
-  std::nth_element(z.begin(), mid, z.end());
-  return *mid;
+  return core::upperMedianInPlace(z);
 }
 
 }  // namespace dynslam::segmentation

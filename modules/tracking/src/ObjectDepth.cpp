@@ -1,5 +1,7 @@
 #include "dynslam/tracking/ObjectDepth.h"
 
+#include <dynslam/core/Median.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -20,10 +22,7 @@ double medianDepthInCentralHalf(const cv::Mat& depth, const cv::Rect2f& box) {
     for (int x = roi.x; x < roi.x + roi.width; ++x)
       if (row[x] > 0 && std::isfinite(row[x])) valid.push_back(row[x]);
   }
-  if (valid.empty()) return 0.0;
-  const auto middle = valid.begin() + valid.size() / 2;
-  std::nth_element(valid.begin(), middle, valid.end());
-  return *middle;
+  return core::upperMedianInPlace(valid);
 }
 
 namespace {

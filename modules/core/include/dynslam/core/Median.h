@@ -10,9 +10,10 @@
 
 namespace dynslam::core {
 
-/// The same on `values` itself, which it reorders: for a buffer reused in a hot loop. 0 for no
-/// values.
-inline double upperMedianInPlace(std::vector<double>& values) {
+/// The same on `values` itself, which it reorders: for a buffer reused in a hot loop (doubles,
+/// or the floats of a depth image). 0 for no values.
+template <class T>
+double upperMedianInPlace(std::vector<T>& values) {
   if (values.empty()) return 0.0;
   const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), mid, values.end());

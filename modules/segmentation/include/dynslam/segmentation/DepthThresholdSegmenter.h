@@ -112,7 +112,8 @@ class DepthThresholdSegmenter {
                                int detectionIndex, const TwoMeansResult& clusters,
                                bool objectIsNear) const;
 
-  /// Step 9 by params_.overlap_rule.
+  /// Step 9 by params_.overlap_rule; then, with object_depth = mask_median, each d_t from its
+  /// final mask.
   void resolveOverlaps(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) const;
 
   DepthThresholdParams params_;
