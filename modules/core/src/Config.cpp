@@ -101,7 +101,11 @@ void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig&
       throw ConfigError("unknown key '" + key + "' in section [" + section + "] of " +
                         cfg.source() + "; known keys: " + joined(known));
   }
-  options.loadFromConfigFile(cfg.ini(), section);
+  try {
+    options.loadFromConfigFile(cfg.ini(), section);
+  } catch (const std::invalid_argument& e) {  // a value readOneOf / readBool / ... refused
+    throw ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
+  }
 }
 
 std::string readOneOf(const mrpt::config::CConfigFileBase& c, const std::string& section,
@@ -113,6 +117,13 @@ std::string readOneOf(const mrpt::config::CConfigFileBase& c, const std::string&
   for (size_t i = 0; i < allowed.size(); ++i)
     list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
   throw std::invalid_argument(key + " = '" + value + "': expected " + list);
+}
+
+bool readBool(const mrpt::config::CConfigFileBase& c, const std::string& section,
+              const std::string& key, bool current) {
+  const std::string read = readOneOf(c, section, key, current ? "true" : "false",
+                                     {"true", "false", "1", "0", "yes", "no"});
+  return read == "true" || read == "1" || read == "yes";
 }
 
 void rejectUnknownSections(const IniConfig& cfg, const std::vector<std::string>& known) {

@@ -129,3 +129,42 @@ TEST(Config, KeywordKeysReadTheirWordsAndNameTheOthers) {
     EXPECT_STREQ(e.what(), "other = 'black': expected light, dark or grey");
   }
 }
+
+TEST(Config, ReadBoolTakesTrueFalseAndRejectsOtherWords) {
+  const auto cfg = IniConfig::fromText("[Ex]\na = true\nb = 0\nc = yes\nd = maybe\n");
+  EXPECT_TRUE(readBool(cfg.ini(), "Ex", "a", false));
+  EXPECT_FALSE(readBool(cfg.ini(), "Ex", "b", true));
+  EXPECT_TRUE(readBool(cfg.ini(), "Ex", "c", false));
+  EXPECT_TRUE(readBool(cfg.ini(), "Ex", "absent", true)) << "absent: the current value";
+  EXPECT_FALSE(readBool(cfg.ini(), "Ex", "absent", false));
+  try {
+    readBool(cfg.ini(), "Ex", "d", true);
+    FAIL() << "'maybe' accepted (MRPT's read_bool takes it for false)";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("d = 'maybe'"), std::string::npos) << e.what();
+  }
+}
+
+struct SwitchOptions : mrpt::config::CLoadableOptions {
+  bool enabled = true;
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override {
+    enabled = readBool(c, s, "enabled", enabled);
+  }
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override {
+    MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "on or off");
+  }
+};
+
+TEST(Config, AValueRefusedWhileLoadingNamesTheSectionAndTheSource) {
+  const auto cfg = IniConfig::fromText("[Ex]\nenabled = maybe\n", "ex.ini");
+  SwitchOptions o;
+  try {
+    loadOptionsStrict(o, cfg, "Ex");
+    FAIL() << "enabled = maybe accepted";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("[Ex]"), std::string::npos) << what;
+    EXPECT_NE(what.find("ex.ini"), std::string::npos) << what;
+    EXPECT_NE(what.find("enabled = 'maybe'"), std::string::npos) << what;
+  }
+}

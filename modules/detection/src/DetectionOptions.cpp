@@ -34,7 +34,7 @@ void DetectionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
     // std::invalid_argument for an unknown name; DetectionStage adds the section and source.
     o.layout = parseYoloLayout(c.read_string(s, "layout", layoutName(o.layout)));
     o.input_size = c.read_int(s, "input_size", o.input_size);
-    o.trim_padding = c.read_bool(s, "trim_padding", o.trim_padding);
+    o.trim_padding = core::readBool(c, s, "trim_padding", o.trim_padding);
     o.confidence = c.read_double(s, "confidence", o.confidence);
     o.nms_iou = c.read_double(s, "nms_iou", o.nms_iou);
     o.threads = c.read_int(s, "threads", o.threads);

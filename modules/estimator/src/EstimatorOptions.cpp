@@ -24,7 +24,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   w.huber_sigmas = c.read_double(s, "huber_sigmas", w.huber_sigmas);
   w.depth_noise.a = c.read_double(s, "depth_sigma_a", w.depth_noise.a);
   w.depth_noise.b = c.read_double(s, "depth_sigma_b", w.depth_noise.b);
-  w.transferred_depth = c.read_bool(s, "transferred_depth", w.transferred_depth);
+  w.transferred_depth = core::readBool(c, s, "transferred_depth", w.transferred_depth);
   w.motion_prior_sigma_translation =
       c.read_double(s, "motion_prior_sigma_translation", w.motion_prior_sigma_translation);
   w.motion_prior_sigma_rotation =
@@ -47,7 +47,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
   max_gyro_bias = c.read_double(s, "max_gyro_bias", max_gyro_bias);
   max_acc_bias = c.read_double(s, "max_acc_bias", max_acc_bias);
   min_keyframe_features = c.read_int(s, "min_keyframe_features", min_keyframe_features);
-  use_imu = c.read_bool(s, "use_imu", use_imu);
+  use_imu = core::readBool(c, s, "use_imu", use_imu);
   auto& n = window.imu_noise;
   n.acc_noise = c.read_double(s, "acc_noise", n.acc_noise);
   n.gyro_noise = c.read_double(s, "gyro_noise", n.gyro_noise);
@@ -58,12 +58,12 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
       c.read_double(s, "init_min_acceleration_rms", imu_init.min_acceleration_rms);
   window.gravity = Eigen::Vector3d(0, 0, -imu_init.gravity_magnitude);
   dynamic_handling = core::readKeyword(c, s, "dynamic_handling", dynamic_handling, kHandlings);
-  nonrigid_factors = c.read_bool(s, "nonrigid_factors", nonrigid_factors);
-  rigid_factors = c.read_bool(s, "rigid_factors", rigid_factors);
+  nonrigid_factors = core::readBool(c, s, "nonrigid_factors", nonrigid_factors);
+  rigid_factors = core::readBool(c, s, "rigid_factors", rigid_factors);
   object_factors_wait_for_imu =
-      c.read_bool(s, "object_factors_wait_for_imu", object_factors_wait_for_imu);
-  drop_moving_landmarks = c.read_bool(s, "drop_moving_landmarks", drop_moving_landmarks);
-  use_gnss = c.read_bool(s, "use_gnss", use_gnss);
+      core::readBool(c, s, "object_factors_wait_for_imu", object_factors_wait_for_imu);
+  drop_moving_landmarks = core::readBool(c, s, "drop_moving_landmarks", drop_moving_landmarks);
+  use_gnss = core::readBool(c, s, "use_gnss", use_gnss);
   gnss.uere_horizontal_m = c.read_double(s, "gnss_uere_horizontal", gnss.uere_horizontal_m);
   gnss.vertical_factor = c.read_double(s, "gnss_vertical_factor", gnss.vertical_factor);
   gnss.alignment.min_span_m = c.read_double(s, "gnss_align_span", gnss.alignment.min_span_m);

@@ -26,13 +26,13 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
       c.read_double(s, "moving_feature_max_speed", p.moving_feature_max_speed);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
   p.background_outside_boxes =
-      c.read_bool(s, "background_outside_boxes", p.background_outside_boxes);
+      core::readBool(c, s, "background_outside_boxes", p.background_outside_boxes);
   p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
   p.rigid.ransac.sample_size = c.read_int(s, "rigid_sample_size", p.rigid.ransac.sample_size);
   p.rigid.ransac.inlier_threshold =
       c.read_double(s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold);
   p.rigid.min_members = c.read_int(s, "rigid_min_members", p.rigid.min_members);
-  p.rigid.noise_gates = c.read_bool(s, "rigid_noise_gates", p.rigid.noise_gates);
+  p.rigid.noise_gates = core::readBool(c, s, "rigid_noise_gates", p.rigid.noise_gates);
   p.camera.ransac.iterations = c.read_int(s, "camera_iterations", p.camera.ransac.iterations);
   p.camera.ransac.inlier_threshold =
       c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);

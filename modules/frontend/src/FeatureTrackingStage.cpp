@@ -35,7 +35,7 @@ void FeatureTrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
   FT_READ(double, t.klt_epsilon, "klt_epsilon");
   FT_READ(double, t.max_fb_error_px, "max_fb_error_px");
   t.flow_init = flowInitFromString(c.read_string(s, "flow_init", toString(t.flow_init)));
-  FT_READ(bool, t.fundamental_ransac, "fundamental_ransac");
+  t.fundamental_ransac = core::readBool(c, s, "fundamental_ransac", t.fundamental_ransac);
   FT_READ(double, t.fundamental_threshold_px, "fundamental_threshold_px");
   FT_READ(double, t.fundamental_confidence, "fundamental_confidence");
 }

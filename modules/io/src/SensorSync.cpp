@@ -31,7 +31,8 @@ void SensorSyncOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
   MRPT_LOAD_CONFIG_VAR(camera_label, string, c, s);
   MRPT_LOAD_CONFIG_VAR(imu_label, string, c, s);
   MRPT_LOAD_CONFIG_VAR(gnss_label, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(skip_frames_without_depth, bool, c, s);
+  skip_frames_without_depth =
+      core::readBool(c, s, "skip_frames_without_depth", skip_frames_without_depth);
   MRPT_LOAD_CONFIG_VAR(min_gnss_fix_quality, int, c, s);
 }
 

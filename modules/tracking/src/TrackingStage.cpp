@@ -28,12 +28,12 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.rho_min_coasting, "rho_min_coasting");
   TRACKING_READ(int, t.max_age, "max_age");
   TRACKING_READ(int, t.min_hits, "min_hits");
-  TRACKING_READ(bool, t.reset_at_border, "reset_at_border");
+  t.reset_at_border = core::readBool(c, s, "reset_at_border", t.reset_at_border);
   TRACKING_READ(double, t.reid_max_distance, "reid_max_distance");
   TRACKING_READ(double, t.reid_max_shift, "reid_max_shift");
   TRACKING_READ(double, t.appearance_memory, "appearance_memory");
   TRACKING_READ(double, t.reid_memory, "reid_memory");
-  TRACKING_READ(bool, t.alternative_depth, "alternative_depth");
+  t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");

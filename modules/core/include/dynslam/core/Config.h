@@ -48,6 +48,8 @@ std::vector<std::string> knownKeys(const mrpt::config::CLoadableOptions& options
 
 /// Loads `options` from `section` after checking that every key the section holds is one
 /// `options` knows; otherwise throws ConfigError naming the key, the section and the source.
+/// A value the options refuse while loading (std::invalid_argument, e.g. from readBool or
+/// readKeyword) becomes a ConfigError naming the section and the source too.
 void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,
                        const std::string& section);
 
@@ -79,6 +81,12 @@ struct Keyword {
 std::string readOneOf(const mrpt::config::CConfigFileBase& c, const std::string& section,
                       const std::string& key, const std::string& current,
                       const std::vector<std::string>& allowed);
+
+/// Reads `key` of `section` as a boolean: true / false (also 1 / 0, yes / no; default:
+/// `current`); throws std::invalid_argument "key = 'value': expected ..." for anything else
+/// (MRPT's read_bool takes any other word for false).
+bool readBool(const mrpt::config::CConfigFileBase& c, const std::string& section,
+              const std::string& key, bool current);
 
 /// The word of `value` in `words` (the first word when the value has none).
 template <class E, std::size_t N>
