@@ -25,6 +25,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.moving_feature_max_speed =
       c.read_double(s, "moving_feature_max_speed", p.moving_feature_max_speed);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
+  p.far_object_min_depth = c.read_double(s, "far_object_min_depth", p.far_object_min_depth);
+  p.far_object_pixel_sigma = c.read_double(s, "far_object_pixel_sigma", p.far_object_pixel_sigma);
   p.background_outside_boxes =
       core::readBool(c, s, "background_outside_boxes", p.background_outside_boxes);
   p.rigid.ransac.iterations = c.read_int(s, "rigid_iterations", p.rigid.ransac.iterations);
@@ -63,6 +65,11 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "features with flow an object needs for a speed; fewer: last decision kept");
   core::writeKey(c, s, "depth_window", p.depth_window,
         "px; a feature's 3-D point uses the robust median depth of this window (1: its pixel)");
+  core::writeKey(c, s, "far_object_min_depth", p.far_object_min_depth,
+                 "m; the depth range: an object with too little depth is judged from its "
+                 "depthless features' pixels, taken this far at least (0: off)");
+  core::writeKey(c, s, "far_object_pixel_sigma", p.far_object_pixel_sigma,
+                 "px; tracking noise of a pixel position, for far_object_min_depth's speed noise");
   core::writeKey(c, s, "background_outside_boxes", p.background_outside_boxes,
                  "camera translation from features outside every box, not just every mask");
   core::writeKey(c, s, "rigid_iterations", p.rigid.ransac.iterations,
@@ -109,6 +116,10 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
   if (!(p.moving_feature_max_speed > p.moving_feature_speed))
     fail("moving_feature_max_speed", std::to_string(p.moving_feature_max_speed),
          "must be > moving_feature_speed");
+  if (!(p.far_object_min_depth >= 0))
+    fail("far_object_min_depth", std::to_string(p.far_object_min_depth), "must be >= 0");
+  if (!(p.far_object_pixel_sigma > 0))
+    fail("far_object_pixel_sigma", std::to_string(p.far_object_pixel_sigma), "must be > 0");
   if (p.speed_window < 1) fail("speed_window", std::to_string(p.speed_window), "must be >= 1");
   if (p.min_flow_features < 1)
     fail("min_flow_features", std::to_string(p.min_flow_features), "must be >= 1");

@@ -1,5 +1,6 @@
 #include "dynslam/frontend/DynamicClassifier.h"
 
+#include "dynslam/frontend/FarPointMotion.h"
 #include "dynslam/frontend/ObjectMembership.h"
 #include "dynslam/frontend/SceneFlow.h"
 
@@ -45,6 +46,60 @@ float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, std:
 
 }  // namespace
 
+std::vector<double> DynamicClassifier::decideFarObjects(
+    core::Frame& frame, const std::vector<const ObjectRegion*>& farOf,
+    std::map<int, bool>& dynamic) {
+  std::vector<double> speed(frame.features.size(), -1.0);
+  const size_t window = size_t(std::max(1, params_.speed_window));
+  const double zMin = params_.far_object_min_depth;
+  const double f = 0.5 * (frame.intrinsics.fx + frame.intrinsics.fy);
+  std::map<int, std::vector<double>> speeds;
+  std::map<int, double> noiseVar;  // pixel and camera-translation variances, summed
+  std::map<int, const ObjectRegion*> seen;
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    if (!farOf[i]) continue;
+    const int id = farOf[i]->object_id;
+    seen[id] = farOf[i];
+    const auto h = pixelHistory_.find(frame.features[i].id);
+    if (h == pixelHistory_.end()) continue;
+    for (const auto& o : h->second) {  // oldest first: the longest span within the window
+      if (o.frame + window < frame_ || o.frame >= frame_ || !(frame.t > o.t)) continue;
+      const double dt = frame.t - o.t;
+      const double v = farPointMinDisplacement(o.pixel, frame.features[i].pixel,
+                                               cameraFromPast(o.frame), frame.intrinsics, zMin) /
+                       dt;
+      speeds[id].push_back(v);
+      const double pixel = params_.far_object_pixel_sigma * zMin / f / dt;
+      const double var = 2 * pixel * pixel + cameraVarianceSince(o.frame) / (dt * dt);
+      noiseVar[id] += var;
+      speed[i] = v - params_.speed_noise_sigmas * std::sqrt(var);
+      break;
+    }
+  }
+  for (const auto& [id, region] : seen) {
+    core::ObjectMotionState s;
+    s.object_id = id;
+    auto v = speeds.find(id);
+    s.features = v == speeds.end() ? 0 : int(v->second.size());
+    // One feature suffices: the noise term grows as features are fewer (a car 20 m away holds
+    // one or two tracked corners: min_flow_features = 3 left 85 % of such objects undecided).
+    if (s.features >= 1) {
+      const double n = double(s.features);
+      s.speed = core::upperMedianInPlace(v->second);
+      const double noise = std::sqrt(1.5625 * noiseVar[id] / n / n);
+      s.dynamic = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
+    } else {
+      const auto last = lastDynamic_.find(id);
+      s.dynamic = last != lastDynamic_.end() && last->second;
+    }
+    lastDynamic_[id] = s.dynamic;
+    dynamic[id] = s.dynamic;
+    counts_.dynamic_objects += s.dynamic;
+    frame.object_motions.push_back(s);
+  }
+  return speed;
+}
+
 const char* toString(CameraMotionSource source) {
   switch (source) {
     case CameraMotionSource::Poses: return "poses";
@@ -60,6 +115,13 @@ DynamicClassifier::DynamicClassifier(DynamicClassifierParams params)
     : params_(params), cameraEstimator_(params.camera, params.seed) {
   // The rigid sets see the window-depth points: their noise is the reading's over ~0.8 w.
   params_.rigid.point_noise_reduction = 0.8 * std::max(1, params_.depth_window);
+}
+
+double DynamicClassifier::cameraVarianceSince(std::size_t frame) const {
+  double sum = 0;
+  for (const auto& [f, var] : cameraVar_)
+    if (f > frame) sum += var;
+  return sum;
 }
 
 Eigen::Isometry3d DynamicClassifier::cameraFromPast(std::size_t frame) const {
@@ -100,6 +162,11 @@ void DynamicClassifier::process(core::Frame& frame) {
   std::map<std::int64_t, int> nextObjectOf;
   const bool windowed = params_.depth_window > 1 && !frame.depth.empty() &&
                         frame.depth.type() == CV_32FC1;
+  std::vector<ObjectRegion> farBoxes;
+  if (params_.far_object_min_depth > 0)
+    for (auto& b : depthlessObjectBoxes(frame))
+      if (!masked.count(b.object_id)) farBoxes.push_back(std::move(b));
+  std::vector<const ObjectRegion*> farOf(frame.features.size(), nullptr);
   std::vector<double> buf;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
@@ -125,6 +192,12 @@ void DynamicClassifier::process(core::Frame& frame) {
     f.object_id = c.region ? c.region->object_id : -1;
     if (c.region) nextObjectOf[f.id] = f.object_id;
     f.feature_class = core::FeatureClass::Static;
+    if (!c.region && !(f.depth > 0))
+      for (const auto& b : farBoxes)
+        if (b.roi.contains({cvRound(f.pixel.x), cvRound(f.pixel.y)})) {
+          farOf[i] = &b;
+          break;
+        }
     const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2, buf)
                              : f.depth;
     if (!(z > 0) || !(f.depth > 0)) continue;
@@ -195,10 +268,7 @@ void DynamicClassifier::process(core::Frame& frame) {
       const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
       const double dt = frame.t - o.t;
       velocityVar[c.region->object_id] += (sp * sp + sq * sq) / (dt * dt);
-      double cam = 0;  // the camera translations of frames (o.frame, now]
-      for (const auto& [f, var] : cameraVar_)
-        if (f > o.frame) cam += var;
-      cameraVarSum[c.region->object_id] += cam / (dt * dt);
+      cameraVarSum[c.region->object_id] += cameraVarianceSince(o.frame) / (dt * dt);
       break;
     }
   }
@@ -243,6 +313,8 @@ void DynamicClassifier::process(core::Frame& frame) {
     frame.object_motions.push_back(s);
   }
 
+  const std::vector<double> farSpeed = decideFarObjects(frame, farOf, dynamic);
+
   // 4. Rigid point sets of the dynamic objects, from the frame-to-frame pairs.
   std::map<int, std::vector<PointPair>> pairs;
   for (size_t i = 0; i < frame.features.size(); ++i) {
@@ -274,7 +346,9 @@ void DynamicClassifier::process(core::Frame& frame) {
                                      params_.moving_feature_speed > 0 &&
                                      cur[i].speed > params_.moving_feature_speed &&
                                      cur[i].speed < params_.moving_feature_max_speed;
-    if (movingInStillObject) {
+    const bool movingFar =
+        farOf[i] && dynamic[farOf[i]->object_id] && farSpeed[i] > params_.speed_threshold;
+    if (movingInStillObject || movingFar) {
       f.feature_class = core::FeatureClass::NonRigid;
       continue;
     }
@@ -304,6 +378,19 @@ void DynamicClassifier::process(core::Frame& frame) {
     next.emplace(frame.features[i].id, std::move(d));
   }
   history_ = std::move(next);
+  if (params_.far_object_min_depth > 0) {
+    std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixels;
+    pixels.reserve(frame.features.size());
+    for (const auto& f : frame.features) {
+      auto h = pixelHistory_.find(f.id);
+      std::deque<PixelObservation> d;
+      if (h != pixelHistory_.end()) d = std::move(h->second);
+      while (!d.empty() && d.front().frame + window <= now) d.pop_front();
+      d.push_back({now, frame.t, f.pixel});
+      pixels.emplace(f.id, std::move(d));
+    }
+    pixelHistory_ = std::move(pixels);
+  }
   objectOf_ = std::move(nextObjectOf);
   wasStatic_ = std::move(nextStatic);
   prevT_ = frame.t;

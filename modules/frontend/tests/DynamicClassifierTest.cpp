@@ -177,6 +177,90 @@ TEST(DynamicClassifier, ClassifiesMoversAndNonMovers) {
   }
 }
 
+/// Appends to frame `f` an object beyond the depth range: its points (at time 0, world) move
+/// with `velocity`; features without depth (ids idBase + i), a confirmed track `trackId` and the
+/// mask the segmentation leaves without enough depth (invalid, the box as roi).
+void addFarObject(core::Frame& f, int trackId, const std::vector<Eigen::Vector3d>& points,
+                  const Eigen::Vector3d& velocity, std::int64_t idBase) {
+  const Eigen::Isometry3d T_c_w = cameraPose(f.t).inverse();
+  std::vector<cv::Point2f> px;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d P = T_c_w * (points[i] + velocity * f.t);
+    core::Feature feat;
+    feat.id = idBase + std::int64_t(i);
+    feat.pixel = cv::Point2f(float(kCamera.fx * P.x() / P.z() + kCamera.cx),
+                             float(kCamera.fy * P.y() / P.z() + kCamera.cy));
+    feat.depth = 0;  // beyond the range
+    f.features.push_back(feat);
+    px.push_back(feat.pixel);
+  }
+  const cv::Rect box = cv::boundingRect(px);
+  core::Track track;
+  track.id = trackId;
+  track.model = core::MotionModel::Rigid;
+  track.state = core::TrackState::Confirmed;
+  f.tracks.push_back(track);
+  core::ObjectMask m;
+  m.track = int(f.tracks.size() - 1);
+  m.roi = cv::Rect(box.x - 3, box.y - 3, box.width + 6, box.height + 6);
+  m.valid = false;
+  f.object_masks.push_back(m);
+}
+
+// Two cars 25 m away, beyond the depth range: one drives across the view at 5 m/s, one is
+// parked. By scene flow (the method) neither has a speed and their features stay Static; with
+// far_object_min_depth = 10 the driving car's pixels leave the segment a static point beyond
+// 10 m would keep to (FarPointMotion.h): it is dynamic and its features NonRigid, while the
+// parked car stays Static. The objects in range are classified as before.
+TEST(DynamicClassifier, ObjectsBeyondTheDepthRangeAreJudgedFromTheirPixels) {
+  const Scene scene;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Eigen::Vector3d> driving, parked;
+  for (int i = 0; i < 12; ++i) {
+    driving.emplace_back(-4 + 1.0 * u(rng), 0.5 + 0.4 * u(rng), 25 + 1.0 * u(rng));
+    parked.emplace_back(5 + 1.0 * u(rng), 0.5 + 0.4 * u(rng), 25 + 1.0 * u(rng));
+  }
+  auto run = [&](double minDepth) {
+    DynamicClassifierParams params;
+    params.far_object_min_depth = minDepth;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    for (int k = 0; k < 15; ++k) {
+      f = scene.frame(k);
+      addFarObject(f, 5, driving, {5.0, 0, 0}, 50000);
+      addFarObject(f, 6, parked, {0, 0, 0}, 60000);
+      classifier.process(f);
+    }
+    return f;
+  };
+  using C = core::FeatureClass;
+  const auto classesOf = [](const core::Frame& f, std::int64_t idBase) {
+    std::map<C, int> n;
+    for (const auto& feat : f.features)
+      if (feat.id >= idBase && feat.id < idBase + 1000) ++n[feat.feature_class];
+    return n;
+  };
+  const core::Frame method = run(0.0);
+  EXPECT_EQ(classesOf(method, 50000)[C::Static], 12) << "no depth, no scene flow: Static";
+  for (const auto& s : method.object_motions) EXPECT_NE(s.object_id, 5);
+
+  const core::Frame far = run(10.0);
+  std::map<int, core::ObjectMotionState> motion;
+  for (const auto& s : far.object_motions) motion[s.object_id] = s;
+  ASSERT_TRUE(motion.count(5) && motion.count(6));
+  EXPECT_TRUE(motion[5].dynamic);
+  EXPECT_GT(motion[5].speed, 1.0) << "a lower bound of the 5 m/s";
+  EXPECT_LT(motion[5].speed, 5.0);
+  EXPECT_FALSE(motion[6].dynamic);
+  EXPECT_LT(motion[6].speed, 0.01);
+  EXPECT_EQ(classesOf(far, 50000)[C::NonRigid], 12) << "no depth: no rigid set, NonRigid";
+  EXPECT_EQ(classesOf(far, 60000)[C::Static], 12);
+  EXPECT_TRUE(motion[1].dynamic);
+  EXPECT_FALSE(motion[2].dynamic);
+  EXPECT_TRUE(motion[4].dynamic);
+}
+
 TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoasts) {
   const Scene scene;
   DynamicClassifier classifier;
@@ -358,6 +442,10 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
   EXPECT_NE(messageOf("speed_window = 0\n").find("speed_window"), std::string::npos);
   EXPECT_NE(messageOf("speed_statistic = mean\n").find("speed_statistic"), std::string::npos);
   EXPECT_NE(messageOf("rigid_sample_size = 2\n").find("rigid_sample_size"), std::string::npos);
+  EXPECT_NE(messageOf("far_object_min_depth = -1\n").find("far_object_min_depth"),
+            std::string::npos);
+  EXPECT_NE(messageOf("far_object_pixel_sigma = 0\n").find("far_object_pixel_sigma"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // of a static point under the camera's motion is zero, that of a moving point is its own
 // displacement; the gyro rotation, turned into camera axes by the extrinsics, is the camera's.
 #include <dynslam/frontend/CameraMotion.h>
+#include <dynslam/frontend/FarPointMotion.h>
 #include <dynslam/frontend/SceneFlow.h>
 
 #include <gtest/gtest.h>
@@ -31,6 +32,41 @@ TEST(SceneFlow, StaticPointHasNoFlowAndAMovingPointItsOwnMotion) {
   const Eigen::Vector3d F = sceneFlow(P0, P1moved, T_c1_c0);
   EXPECT_LT((F - T_w_c1.linear().transpose() * move).norm(), 1e-12);
   EXPECT_NEAR(F.norm(), move.norm(), 1e-12);
+}
+
+// A point beyond the depth range (no depth): static at any depth >= minDepth it stays on the
+// segment its ray sweeps under the camera's motion (residual 0, also far away); moving 0.3 m
+// 20 m away it leaves the segment, and the bound minDepth / f * residual stays below the true
+// 0.3 m; a static point nearer than minDepth (not what the bound assumes) is off the segment.
+TEST(FarPointMotion, StaticFarPointsStayOnTheirSegmentMovingOnesLeaveIt) {
+  const core::CameraIntrinsics k{500, 500, 320, 240, 640, 480};
+  const Eigen::Isometry3d T_w_c0 = pose({0, 1, 0}, 0.05, {0.0, 0.0, 0.0});
+  const Eigen::Isometry3d T_w_c1 = pose({0, 1, 0}, 0.08, {0.2, 0.0, 0.4});
+  const Eigen::Isometry3d T_c1_c0 = T_w_c1.inverse() * T_w_c0;
+  const auto pixel = [&](const Eigen::Isometry3d& T_w_c, const Eigen::Vector3d& X) {
+    const Eigen::Vector3d P = T_w_c.inverse() * X;
+    return cv::Point2f(float(k.fx * P.x() / P.z() + k.cx), float(k.fy * P.y() / P.z() + k.cy));
+  };
+  const double minDepth = 10;
+  for (const double z : {10.5, 20.0, 80.0}) {
+    const Eigen::Vector3d X = T_w_c0 * Eigen::Vector3d(1.5, -0.5, z);
+    EXPECT_LT(farPointResidualPx(pixel(T_w_c0, X), pixel(T_w_c1, X), T_c1_c0, k, minDepth), 0.01)
+        << "static at " << z << " m";
+  }
+  // 0.3 m up (across the segment: the camera moved in x and z) shows almost whole through the
+  // bound, 0.3 * 10 / 20 m; 0.3 m sideways lies partly along the segment and shows in part.
+  const Eigen::Vector3d X = T_w_c0 * Eigen::Vector3d(1.5, -0.5, 20.0);
+  for (const auto& [move, least] : {std::pair{Eigen::Vector3d(0, -0.3, 0), 0.9 * 0.15},
+                                    std::pair{Eigen::Vector3d(0.3, 0, 0), 0.05}}) {
+    const Eigen::Vector3d walked = X + T_w_c0.linear() * move;
+    const double bound =
+        farPointMinDisplacement(pixel(T_w_c0, X), pixel(T_w_c1, walked), T_c1_c0, k, minDepth);
+    EXPECT_LT(bound, 0.3);
+    EXPECT_GT(bound, least) << move.transpose();
+  }
+  const Eigen::Vector3d near = T_w_c0 * Eigen::Vector3d(1.5, -0.5, 3.0);
+  EXPECT_GT(farPointResidualPx(pixel(T_w_c0, near), pixel(T_w_c1, near), T_c1_c0, k, minDepth), 5)
+      << "a static point 3 m away moves like no point beyond 10 m";
 }
 
 TEST(SceneFlow, BackProjectionInvertsThePinhole) {

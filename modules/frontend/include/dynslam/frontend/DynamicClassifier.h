@@ -53,6 +53,18 @@
 //    Up to moving_feature_max_speed: a faster flow is a depth jump at a silhouette or a
 //    feature whose track slid from one surface onto another (on indoor_people_high a third of
 //    the still objects' features above 0.8 m/s read more than 3 m/s; the walkers', 0.6-1.7).
+//  - far_object_min_depth (default 0 = off): objects beyond the depth range. A detection whose
+//    box has too little depth has no mask (core::ObjectMask::valid false) and, the method
+//    deciding by scene flow, its features stayed Static: on outdoor_street_high, where the
+//    depth ends at 10 m, 2586 of the 3430 dynamic features missed had no depth, 1755 of them in
+//    the boxes of such detections (bench-classification seed 1). Set to the depth camera's range:
+//    the features without depth inside such a box are taken to be at least that far, and
+//    FarPointMotion.h bounds their own motion from below from their pixels and the camera's motion;
+//    the object is dynamic when the median of those bounds over the window, per second, exceeds
+//    speed_threshold by speed_noise_sigmas of its noise (far_object_pixel_sigma of tracking error
+//    per pixel, and the camera's translation), and then its depthless features moving faster than
+//    speed_threshold by themselves are NonRigid (no depth: no rigid set), the others (background
+//    seen through the box) Static.
 // The camera's motion between frames, which the scene flow removes, is the gyro's rotation and
 // a translation registered on background features (CameraMotion.h). Background means outside
 // every detection box and every track's box (background_outside_boxes), not merely outside the
@@ -80,8 +92,11 @@
 #include <map>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 namespace dynslam::frontend {
+
+struct ObjectRegion;  // ObjectMembership.h
 
 enum class SpeedStatistic { MedianFlow, MeanNorm };
 
@@ -109,6 +124,11 @@ struct DynamicClassifierParams {
   /// track's box, not just outside the masks (true); with fewer than camera.min_inliers such
   /// pairs, constant velocity. See the file comment.
   bool background_outside_boxes = true;
+  /// m; > 0: the features without depth in the box of an object with too little depth are at
+  /// least this far (the depth camera's range) and measure the object's motion from their
+  /// pixels (not the method; 0: off). See the file comment.
+  double far_object_min_depth = 0.0;
+  double far_object_pixel_sigma = 0.5;  ///< px; feature tracking noise of one pixel position
   RigidPointSetParams rigid;     ///< the objects' rigid sets (method.md section 4)
   CameraMotionParams camera;     ///< the background registration
   std::uint32_t seed = 1;        ///< RANSAC draws (deterministic runs)
@@ -140,6 +160,15 @@ class DynamicClassifier {
     Eigen::Vector3d P;      ///< camera frame of that frame
   };
 
+  /// far_object_min_depth: decides the objects of the depthless boxes from their features
+  /// without depth (farOf: feature index -> the box holding it, or nullptr), appends their
+  /// ObjectMotionState and sets `dynamic`; returns each such feature's lower bound of its own
+  /// speed over the window (m/s, FarPointMotion.h; -1: not measured), by feature index.
+  std::vector<double> decideFarObjects(core::Frame& frame,
+                                       const std::vector<const ObjectRegion*>& farOf,
+                                       std::map<int, bool>& dynamic);
+  /// Summed variance (m^2) of the camera translations of the frames after `frame` up to now.
+  double cameraVarianceSince(std::size_t frame) const;
   /// T_{C(cur) <- C(frame)} from the chain of estimated camera motions.
   Eigen::Isometry3d cameraFromPast(std::size_t frame) const;
 
@@ -155,6 +184,13 @@ class DynamicClassifier {
   /// Variance of each frame's camera translation (m^2), frame counter -> value, same span.
   std::deque<std::pair<std::size_t, double>> cameraVar_;
   std::unordered_map<std::int64_t, std::deque<Observation>> history_;  ///< per feature id
+  struct PixelObservation {
+    std::size_t frame = 0;
+    double t = 0;
+    cv::Point2f pixel;
+  };
+  /// Per feature id, its pixels over the window (far_object_min_depth > 0 only).
+  std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixelHistory_;
   std::map<int, bool> lastDynamic_;                                    ///< per object id
   std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
   std::map<std::int64_t, int> objectOf_;  ///< feature id -> object id, last frame

@@ -22,6 +22,11 @@ struct ObjectRegion {
 /// nearest first.
 std::vector<ObjectRegion> objectRegions(const core::Frame& frame);
 
+/// One region per mask left invalid for too little depth (the object is beyond the depth
+/// camera's range, or its depth is missing) whose track is known: the detection box as `roi`,
+/// no `mask`, depth 0. In input order.
+std::vector<ObjectRegion> depthlessObjectBoxes(const core::Frame& frame);
+
 /// The region holding `pixel`, nearest first; nullptr for background.
 const ObjectRegion* regionAt(const std::vector<ObjectRegion>& regions, const cv::Point2f& pixel);
 

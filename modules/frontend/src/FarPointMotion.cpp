@@ -1,0 +1,42 @@
+#include "dynslam/frontend/FarPointMotion.h"
+
+#include <algorithm>
+
+namespace dynslam::frontend {
+namespace {
+
+bool project(const Eigen::Vector3d& P, const core::CameraIntrinsics& k, Eigen::Vector2d& uv) {
+  if (!(P.z() > 1e-9)) return false;
+  uv = {k.fx * P.x() / P.z() + k.cx, k.fy * P.y() / P.z() + k.cy};
+  return true;
+}
+
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + s * ab)).norm();
+}
+
+}  // namespace
+
+double farPointResidualPx(const cv::Point2f& previous, const cv::Point2f& current,
+                          const Eigen::Isometry3d& T_cur_prev, const core::CameraIntrinsics& k,
+                          double minDepth) {
+  const Eigen::Vector3d ray((previous.x - k.cx) / k.fx, (previous.y - k.cy) / k.fy, 1.0);
+  Eigen::Vector2d atInfinity, atMinDepth;
+  if (!project(T_cur_prev.linear() * ray, k, atInfinity) ||
+      !project(T_cur_prev * (minDepth * ray), k, atMinDepth))
+    return 0.0;
+  return distanceToSegment({current.x, current.y}, atMinDepth, atInfinity);
+}
+
+double farPointMinDisplacement(const cv::Point2f& previous, const cv::Point2f& current,
+                               const Eigen::Isometry3d& T_cur_prev, const core::CameraIntrinsics& k,
+                               double minDepth) {
+  return farPointResidualPx(previous, current, T_cur_prev, k, minDepth) * minDepth /
+         (0.5 * (k.fx + k.fy));
+}
+
+}  // namespace dynslam::frontend
