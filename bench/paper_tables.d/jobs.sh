@@ -141,11 +141,12 @@ detector() {
 
 # A copy of params/sim_vio.ini with YOLOX-nano in its own thread instead of the ground-truth
 # detector (whose keys are unknown to onnx_yolo), and the predicted-box segmentation.
+# params/sim_vio.ini with its [Detection] section replaced by YOLOX-nano in the detection thread
+# (its [PredictedBoxes] stage, which fills the frames between detections, is kept as it is).
 yoloxIni() {
   awk '/^\[/ { skip = ($0 == "[Detection]") } !skip' "$ROOT/params/sim_vio.ini"
   printf '\n[Detection]\ndetector = onnx_yolo\nmode = realtime\nmodel = %s\nlayout = yolox\ninput_size = 416\n' \
     "$SHARED/models/yolox_nano.onnx"
-  printf '\n[PredictedBoxes]\nboxes = predicted_tracks\nobject_cluster = occluder_aware\noverlap_rule = connected\n'
 }
 
 timing() {
