@@ -205,6 +205,7 @@ void DynamicClassifier::process(core::Frame& frame) {
       for (const auto& b : farBoxes)
         if (centralHalf(b.roi).contains({cvRound(f.pixel.x), cvRound(f.pixel.y)})) {
           farOf[i] = &b;
+          f.object_id = b.object_id;  // on the object, though not in a mask (none was made)
           break;
         }
     const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2, buf)

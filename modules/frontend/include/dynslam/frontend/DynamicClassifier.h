@@ -59,9 +59,9 @@
 //    depth ends at 10 m, 2586 of the 3430 dynamic features missed had no depth, 1755 of them in
 //    the boxes of such detections (bench-classification seed 1). Set to the depth camera's range
 //    (or less): the features without depth in the middle half of such a box (nearer its edge:
-//    mostly background and silhouette corners) are taken to be at least that far, and
-//    FarPointMotion.h bounds their own motion from below from their pixels and the camera's
-//    motion; the object is dynamic when the median of those bounds over the window, per second,
+//    mostly background and silhouette corners) belong to its object and are taken to be at
+//    least that far, and FarPointMotion.h bounds their own motion from below from their pixels
+//    and the camera's motion; the object is dynamic when the median of those bounds over the window, per second,
 //    exceeds speed_threshold by speed_noise_sigmas of its noise (far_object_pixel_sigma of
 //    tracking error per pixel, and the camera's translation), and then its depthless features
 //    moving faster than speed_threshold by themselves are NonRigid (no depth: no rigid set), the
