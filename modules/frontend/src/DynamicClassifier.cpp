@@ -392,6 +392,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixels;
     pixels.reserve(frame.features.size());
     for (const auto& f : frame.features) {
+      if (f.depth > 0) continue;  // only depthless features are measured by their pixels
       auto h = pixelHistory_.find(f.id);
       std::deque<PixelObservation> d;
       if (h != pixelHistory_.end()) d = std::move(h->second);

@@ -190,7 +190,7 @@ class DynamicClassifier {
     double t = 0;
     cv::Point2f pixel;
   };
-  /// Per feature id, its pixels over the window (far_object_min_depth > 0 only).
+  /// Per depthless feature id, its pixels over the window (far_object_min_depth > 0 only).
   std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixelHistory_;
   std::map<int, bool> lastDynamic_;                                    ///< per object id
   std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
