@@ -145,6 +145,8 @@ TEST(Config, ReadBoolTakesTrueFalseAndRejectsOtherWords) {
   }
 }
 
+namespace {
+
 struct SwitchOptions : mrpt::config::CLoadableOptions {
   bool enabled = true;
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override {
@@ -154,6 +156,8 @@ struct SwitchOptions : mrpt::config::CLoadableOptions {
     MRPT_SAVE_CONFIG_VAR_COMMENT(enabled, "on or off");
   }
 };
+
+}  // namespace
 
 TEST(Config, AValueRefusedWhileLoadingNamesTheSectionAndTheSource) {
   const auto cfg = IniConfig::fromText("[Ex]\nenabled = maybe\n", "ex.ini");

@@ -53,6 +53,18 @@ cv::Rect centralHalf(const cv::Rect& box) {
   return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
 }
 
+/// The entries of feature `id` in `history` within the last `window` frames before `now`, with
+/// `latest` appended (moved out of `history`, which is rebuilt each frame).
+template <class Entry>
+std::deque<Entry> withLatest(std::unordered_map<std::int64_t, std::deque<Entry>>& history,
+                             std::int64_t id, std::size_t window, std::size_t now, Entry latest) {
+  std::deque<Entry> d;
+  if (const auto h = history.find(id); h != history.end()) d = std::move(h->second);
+  while (!d.empty() && d.front().frame + window <= now) d.pop_front();
+  d.push_back(std::move(latest));
+  return d;
+}
+
 }  // namespace
 
 std::vector<double> DynamicClassifier::decideFarObjects(
@@ -64,11 +76,11 @@ std::vector<double> DynamicClassifier::decideFarObjects(
   const double f = 0.5 * (frame.intrinsics.fx + frame.intrinsics.fy);
   std::map<int, std::vector<double>> speeds;
   std::map<int, double> noiseVar;  // pixel and camera-translation variances, summed
-  std::map<int, const ObjectRegion*> seen;
+  std::set<int> seen;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     if (!farOf[i]) continue;
     const int id = farOf[i]->object_id;
-    seen[id] = farOf[i];
+    seen.insert(id);
     const auto h = pixelHistory_.find(frame.features[i].id);
     if (h == pixelHistory_.end()) continue;
     for (const auto& o : h->second) {  // oldest first: the longest span within the window
@@ -85,7 +97,7 @@ std::vector<double> DynamicClassifier::decideFarObjects(
       break;
     }
   }
-  for (const auto& [id, region] : seen) {
+  for (const int id : seen) {
     core::ObjectMotionState s;
     s.object_id = id;
     auto v = speeds.find(id);
@@ -379,27 +391,18 @@ void DynamicClassifier::process(core::Frame& frame) {
   std::unordered_map<std::int64_t, std::deque<Observation>> next;
   next.reserve(frame.features.size());
   for (size_t i = 0; i < frame.features.size(); ++i) {
-    if (!cur[i].has_point) continue;
-    auto h = history_.find(frame.features[i].id);
-    std::deque<Observation> d;
-    if (h != history_.end()) d = std::move(h->second);
-    while (!d.empty() && d.front().frame + window <= now) d.pop_front();
-    d.push_back({now, frame.t, cur[i].P});
-    next.emplace(frame.features[i].id, std::move(d));
+    const std::int64_t id = frame.features[i].id;
+    if (cur[i].has_point)
+      next.emplace(id, withLatest(history_, id, window, now, Observation{now, frame.t, cur[i].P}));
   }
   history_ = std::move(next);
   if (params_.far_object_min_depth > 0) {
     std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixels;
     pixels.reserve(frame.features.size());
-    for (const auto& f : frame.features) {
-      if (f.depth > 0) continue;  // only depthless features are measured by their pixels
-      auto h = pixelHistory_.find(f.id);
-      std::deque<PixelObservation> d;
-      if (h != pixelHistory_.end()) d = std::move(h->second);
-      while (!d.empty() && d.front().frame + window <= now) d.pop_front();
-      d.push_back({now, frame.t, f.pixel});
-      pixels.emplace(f.id, std::move(d));
-    }
+    for (const auto& f : frame.features)
+      if (!(f.depth > 0))  // only depthless features are measured by their pixels
+        pixels.emplace(f.id, withLatest(pixelHistory_, f.id, window, now,
+                                        PixelObservation{now, frame.t, f.pixel}));
     pixelHistory_ = std::move(pixels);
   }
   objectOf_ = std::move(nextObjectOf);

@@ -1,5 +1,7 @@
 #include "dynslam/frontend/FarPointMotion.h"
 
+#include "dynslam/frontend/SceneFlow.h"
+
 #include <algorithm>
 
 namespace dynslam::frontend {
@@ -24,7 +26,7 @@ double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
 double farPointResidualPx(const cv::Point2f& previous, const cv::Point2f& current,
                           const Eigen::Isometry3d& T_cur_prev, const core::CameraIntrinsics& k,
                           double minDepth) {
-  const Eigen::Vector3d ray((previous.x - k.cx) / k.fx, (previous.y - k.cy) / k.fy, 1.0);
+  const Eigen::Vector3d ray = backProject(previous, 1.0, k);  // depth 1 along the ray
   Eigen::Vector2d atInfinity, atMinDepth;
   if (!project(T_cur_prev.linear() * ray, k, atInfinity) ||
       !project(T_cur_prev * (minDepth * ray), k, atMinDepth))

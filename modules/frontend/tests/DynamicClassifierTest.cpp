@@ -269,9 +269,11 @@ TEST(DynamicClassifier, ObjectsBeyondTheDepthRangeAreJudgedFromTheirPixels) {
   EXPECT_EQ(classesOf(far, 50000)[C::NonRigid], inMiddle);
   EXPECT_EQ(classesOf(far, 50000)[C::Static], 30 - inMiddle);
   EXPECT_EQ(classesOf(far, 60000)[C::Static], 30);
-  for (const auto& feat : far.features)
-    if (feat.id >= 50000 && feat.id < 51000 && feat.feature_class == C::NonRigid)
+  for (const auto& feat : far.features) {
+    if (feat.id >= 50000 && feat.id < 51000 && feat.feature_class == C::NonRigid) {
       EXPECT_EQ(feat.object_id, 5) << "feature " << feat.id;
+    }
+  }
   EXPECT_TRUE(motion[1].dynamic);
   EXPECT_FALSE(motion[2].dynamic);
   EXPECT_TRUE(motion[4].dynamic);

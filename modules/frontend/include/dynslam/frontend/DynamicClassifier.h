@@ -61,11 +61,11 @@
 //    (or less): the features without depth in the middle half of such a box (nearer its edge:
 //    mostly background and silhouette corners) belong to its object and are taken to be at
 //    least that far, and FarPointMotion.h bounds their own motion from below from their pixels
-//    and the camera's motion; the object is dynamic when the median of those bounds over the window, per second,
-//    exceeds speed_threshold by speed_noise_sigmas of its noise (far_object_pixel_sigma of
-//    tracking error per pixel, and the camera's translation), and then its depthless features
-//    moving faster than speed_threshold by themselves are NonRigid (no depth: no rigid set), the
-//    others (background seen through the box) Static.
+//    and the camera's motion; the object is dynamic when the median of those bounds over the
+//    window, per second, exceeds speed_threshold by speed_noise_sigmas of its noise
+//    (far_object_pixel_sigma of tracking error per pixel, and the camera's translation), and
+//    then its depthless features moving faster than speed_threshold by themselves are NonRigid
+//    (no depth: no rigid set), the others (background seen through the box) Static.
 // The camera's motion between frames, which the scene flow removes, is the gyro's rotation and
 // a translation registered on background features (CameraMotion.h). Background means outside
 // every detection box and every track's box (background_outside_boxes), not merely outside the
