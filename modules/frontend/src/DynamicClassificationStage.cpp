@@ -21,6 +21,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
   p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
   p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
+  p.still_feature_in_still_box =
+      core::readBool(c, s, "still_feature_in_still_box", p.still_feature_in_still_box);
   p.moving_feature_speed = c.read_double(s, "moving_feature_speed", p.moving_feature_speed);
   p.moving_feature_max_speed =
       c.read_double(s, "moving_feature_max_speed", p.moving_feature_max_speed);
@@ -57,6 +59,9 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "dynamic when speed > speed_threshold + this * the speed's noise (0: the method)");
   core::writeKey(c, s, "still_feature_speed", p.still_feature_speed,
                  "m/s; a static feature slower than this stays static in any mask (0: off)");
+  core::writeKey(c, s, "still_feature_in_still_box", p.still_feature_in_still_box,
+                 "true: ... and so does one that was not static, inside the box of another "
+                 "object judged not to move (not the method)");
   core::writeKey(c, s, "moving_feature_speed", p.moving_feature_speed,
                  "m/s; a feature faster than this in a still object's mask is non-rigid (0: off)");
   core::writeKey(c, s, "moving_feature_max_speed", p.moving_feature_max_speed,

@@ -65,6 +65,20 @@ std::deque<Entry> withLatest(std::unordered_map<std::int64_t, std::deque<Entry>>
   return d;
 }
 
+/// Whether `pixel` lies in the box of an object other than `own` not judged to move: by its
+/// latest decision (`dynamic`: this frame's, or the last one of an object whose features all
+/// went to other masks), or for want of one (no scene flow says it moves, as for a new track).
+bool inStillObjectsBox(const std::vector<ObjectRegion>& regions, const std::map<int, bool>& dynamic,
+                       int own, const cv::Point2f& pixel) {
+  const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
+  for (const auto& r : regions) {
+    if (r.object_id == own || !r.roi.contains(px)) continue;
+    const auto d = dynamic.find(r.object_id);
+    if (d == dynamic.end() || !d->second) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<double> DynamicClassifier::decideFarObjects(
@@ -361,9 +375,11 @@ void DynamicClassifier::process(core::Frame& frame) {
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
     const auto* region = cur[i].region;
-    const bool stillAndWasStatic = cur[i].speed >= 0 &&
-                                   cur[i].speed < params_.still_feature_speed &&
-                                   wasStatic_.count(f.id) > 0;
+    const bool still = cur[i].speed >= 0 && cur[i].speed < params_.still_feature_speed;
+    const bool stillAndWasStatic =
+        still && (wasStatic_.count(f.id) > 0 ||
+                  (params_.still_feature_in_still_box && region &&
+                   inStillObjectsBox(regions, lastDynamic_, region->object_id, f.pixel)));
     const bool movingInStillObject = region && !dynamic[region->object_id] &&
                                      params_.moving_feature_speed > 0 &&
                                      cur[i].speed > params_.moving_feature_speed &&

@@ -13,6 +13,7 @@
 
 #include <map>
 #include <random>
+#include <set>
 
 namespace dynslam::frontend {
 namespace {
@@ -353,6 +354,62 @@ TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
   EXPECT_EQ(method.first, 0) << "by the object's class: dynamic";
   const auto still = run(0.2);
   EXPECT_EQ(still.first, still.second) << "still: Static";
+}
+
+// From frame 12 on the walker's mask holds the standing person's left half (the walker passing
+// within e of it) and the standing person's features are new tracks (ids + 3000: lost and found
+// again), its own mask still there: those features never were Static, so still_feature_speed
+// alone leaves them dynamic; still_feature_in_still_box makes them Static, as they are still
+// and inside the box of an object judged not to move.
+TEST(DynamicClassifier, StillFeaturesInAStillObjectsBoxAreStaticThoughNeverStaticBefore) {
+  auto run = [](bool inStillBox) {
+    DynamicClassifierParams params;
+    params.still_feature_speed = 0.2;
+    params.still_feature_in_still_box = inStillBox;
+    const Scene scene;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    std::set<std::int64_t> heldFromTheStart;
+    for (int k = 0; k < 15; ++k) {
+      f = scene.frame(k);
+      if (k >= 12) {
+        auto& m = f.object_masks;
+        cv::Rect half = m[1].roi;
+        half.width /= 2;
+        const cv::Rect roi = m[0].roi | half;
+        cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
+        mask(m[0].roi - roi.tl()).setTo(255);
+        mask(half - roi.tl()).setTo(255);
+        m[0].roi = roi;
+        m[0].mask = mask;
+        for (auto& feat : f.features)
+          if (feat.id >= 2000 && feat.id < 3000) feat.id += 3000;
+      }
+      classifier.process(f);
+      if (k == 12)  // held by the walker's mask since they appeared
+        for (const auto& feat : f.features)
+          if (feat.id >= 5000 && feat.id < 6000 && feat.object_id == 1)
+            heldFromTheStart.insert(feat.id);
+    }
+    int onWalker = 0, staticOnWalker = 0, walkerDynamic = 0, standingOwnStatic = 0;
+    for (const auto& feat : f.features) {
+      if (heldFromTheStart.count(feat.id) && feat.object_id == 1) {
+        ++onWalker;
+        staticOnWalker += feat.feature_class == core::FeatureClass::Static;
+      }
+      if (feat.id >= 5000 && feat.id < 6000 && feat.object_id == 2)
+        standingOwnStatic += feat.feature_class == core::FeatureClass::Static;
+      if (feat.id >= 1000 && feat.id < 2000)
+        walkerDynamic += feat.feature_class != core::FeatureClass::Static;
+    }
+    EXPECT_GE(onWalker, 5) << "the walker's mask holds some of them";
+    EXPECT_GE(standingOwnStatic, 5) << "the rest are the standing person's, judged still";
+    EXPECT_EQ(walkerDynamic, 25) << "the walker's own features stay dynamic";
+    return std::make_pair(staticOnWalker, onWalker);
+  };
+  EXPECT_EQ(run(false).first, 0) << "never Static before: dynamic";
+  const auto inBox = run(true);
+  EXPECT_EQ(inBox.first, inBox.second) << "still, in a still object's box: Static";
 }
 
 // The converse: the standing person's mask grows over the walker (a walker less than e behind a
