@@ -18,7 +18,8 @@ BIN="$BUILD/bin"
 SCENES="${DYNSLAM_SHARED_DIR:-$ROOT/../shared}/data/7scenes"
 [ -d "$SCENES" ] || { echo "estimator_7scenes.sh: $SCENES is absent" >&2; exit 1; }
 mkdir -p "$OUT"
-[ -f "$OUT/7scenes.rawlog" ] || "$BIN/sevenscenes2rawlog" --in "$SCENES" --out "$OUT/7scenes.rawlog" > /dev/null
+# Converted again when the converter is newer than the cached rawlog (its conversion changed).
+[ "$OUT/7scenes.rawlog" -nt "$BIN/sevenscenes2rawlog" ] || "$BIN/sevenscenes2rawlog" --in "$SCENES" --out "$OUT/7scenes.rawlog" > /dev/null
 "$BIN/dynslam" --config "$ROOT/params/7scenes_vo.ini" --rawlog "$OUT/7scenes.rawlog" --out "$OUT/run" \
   --quiet > "$OUT/run.log" 2>&1
 "$BIN/dynslam-eval" ape "$OUT/7scenes.gt.tum" "$OUT/run/trajectory.tum" --align se3 \

@@ -66,7 +66,7 @@ else
     echo "demo: $SCENES is absent (it ships beside the repository as ../shared)" >&2
     exit 1
   fi
-  if [ ! -f "$DEMO/7scenes.rawlog" ]; then
+  if [ ! "$DEMO/7scenes.rawlog" -nt "$BIN/sevenscenes2rawlog" ]; then
     "$BIN/sevenscenes2rawlog" --in "$SCENES" --out "$DEMO/7scenes.rawlog"
   fi
   RAWLOG="$DEMO/7scenes.rawlog"

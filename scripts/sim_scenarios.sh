@@ -41,7 +41,7 @@ for ini in "$ROOT"/params/sim/*.ini; do
       echo "$name: skipped, $SHARED/data/7scenes is absent"
       continue
     fi
-    [ -f "$OUT/7scenes.rawlog" ] ||
+    [ "$OUT/7scenes.rawlog" -nt "$BIN/sevenscenes2rawlog" ] ||
       "$BIN/sevenscenes2rawlog" --in "$SHARED/data/7scenes" --out "$OUT/7scenes.rawlog" >/dev/null
     args+=(--set "Augment.rawlog=$OUT/7scenes.rawlog")
   fi

@@ -35,7 +35,10 @@ simSettings() {
 render() {
   local seed="$1" sc="$2" S
   S=$(scenarioDir "$seed" "$sc")
-  [ -f "$S/.rendered" ] && return 0
+  # A render is kept unless the 7-Scenes rawlog it augments was converted again since.
+  if [ -f "$S/.rendered" ] && { [ "$sc" != augmented_7scenes ] || [ "$S/.rendered" -nt "$OUT/7scenes.rawlog" ]; }; then
+    return 0
+  fi
   mkdir -p "$(dirname "$S")"
   # shellcheck disable=SC2046
   if "$BIN/dynslam-sim" --config "$ROOT/params/sim/$sc.ini" --out "$S" --quiet \

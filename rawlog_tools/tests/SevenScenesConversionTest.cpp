@@ -161,14 +161,17 @@ TEST_F(RawlogToolsSevenScenes, StreamsSixHundredRgbdObservationsThirtiethOfASeco
   EXPECT_EQ(count, kFrames);
 }
 
+// The intrinsics file is the depth camera's; the colour camera has f = 525 px at the same
+// principal point, and both sit at the same place (readers register depth to colour).
 TEST_F(RawlogToolsSevenScenes, SetsCameraFieldsFromTheIntrinsicsFile) {
   const auto obs = observationsAt({0}).at(0);
   ASSERT_TRUE(obs);
   for (const mrpt::img::TCamera* cam : {&obs->cameraParams, &obs->cameraParamsIntensity}) {
+    const double f = cam == &obs->cameraParams ? 585.0 : 525.0;
     EXPECT_EQ(cam->ncols, 640u);
     EXPECT_EQ(cam->nrows, 480u);
-    EXPECT_DOUBLE_EQ(cam->fx(), 585.0);
-    EXPECT_DOUBLE_EQ(cam->fy(), 585.0);
+    EXPECT_DOUBLE_EQ(cam->fx(), f);
+    EXPECT_DOUBLE_EQ(cam->fy(), f);
     EXPECT_DOUBLE_EQ(cam->cx(), 320.0);
     EXPECT_DOUBLE_EQ(cam->cy(), 240.0);
   }
@@ -324,6 +327,41 @@ TEST(RawlogToolsSevenScenesConverter, FrameRangeAndEmbeddedImages) {
     ++index;
   });
   EXPECT_EQ(index, 13);
+}
+
+// --colour-intrinsics: "depth" writes the depth camera's for colour too (the cameras then
+// coincide for readers), explicit values are written as given, malformed ones are an error
+// naming the flag.
+TEST(RawlogToolsSevenScenesConverter, ColourIntrinsicsFlag) {
+  DYNSLAM_REQUIRE_SHARED(dataDir, "data/7scenes");
+  const std::string rawlog = dynslam::testing::scratchDir() + "/colourk.rawlog";
+  const auto convert = [&](const std::string& value) {
+    return runCommand(program("sevenscenes2rawlog") + " --embed-images --in " +
+                      shellQuoted(dataDir) + " --out " + shellQuoted(rawlog) +
+                      " --first 0 --last 0 --colour-intrinsics " + value);
+  };
+  const auto colourCamera = [&] {
+    mrpt::img::TCamera cam;
+    forEachObservation(rawlog, [&](const mrpt::obs::CObservation::Ptr& o) {
+      cam = std::dynamic_pointer_cast<CObservation3DRangeScan>(o)->cameraParamsIntensity;
+    });
+    return cam;
+  };
+  auto r = convert("depth");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_DOUBLE_EQ(colourCamera().fx(), 585.0);
+  r = convert("520,521,319,241");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto cam = colourCamera();
+  EXPECT_DOUBLE_EQ(cam.fx(), 520.0);
+  EXPECT_DOUBLE_EQ(cam.fy(), 521.0);
+  EXPECT_DOUBLE_EQ(cam.cx(), 319.0);
+  EXPECT_DOUBLE_EQ(cam.cy(), 241.0);
+  for (const std::string bad : {"525,525", "525,525,320,abc", "0,525,320,240"}) {
+    r = convert(bad);
+    EXPECT_NE(r.exit_code, 0) << bad;
+    EXPECT_NE(r.output.find("--colour-intrinsics"), std::string::npos) << r.output;
+  }
 }
 
 TEST(RawlogToolsSevenScenesConverter, MissingInputFolderIsAnErrorNamingIt) {

@@ -47,7 +47,9 @@ TEST(FeatureTrackerSevenScenes, TracksAStaticRoomWithFewRejections) {
             << 100.0 * withDepth / features << " %, lost " << 100.0 * lost / incoming
             << " % per frame (RANSAC " << 100.0 * lostRansac / incoming << " %)\n";
   EXPECT_GT(meanAge, 8.0) << "measured 21";
-  EXPECT_GT(double(withDepth) / features, 0.8);
+  // The depth camera (f 585 px) sees less than the colour camera (f 525 px): registered, its
+  // depth covers 0.90 x 0.90 of the colour image, and corners crowd the borders (measured 72 %).
+  EXPECT_GT(double(withDepth) / features, 0.65);
   EXPECT_LT(double(lostRansac) / incoming, 0.03) << "a static room: few epipolar outliers (1.2 %)";
   EXPECT_LT(double(lost) / incoming, 0.10) << "measured 4 %";
 }

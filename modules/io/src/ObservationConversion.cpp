@@ -74,8 +74,12 @@ void fillFrameFromRgbd(const mrpt::obs::CObservation3DRangeScan& obs, core::Fram
       frame.intrinsics.width = frame.rgb.cols;
       frame.intrinsics.height = frame.rgb.rows;
     }
+    // MRPT's test compares the poses only: a depth camera with other intrinsics at the same
+    // place (7-Scenes: f 585 px against the colour camera's 525) still needs registering.
     const bool sameCamera = obs.doDepthAndIntensityCamerasCoincide() &&
-                            depth.cols == frame.rgb.cols && depth.rows == frame.rgb.rows;
+                            depth.cols == frame.rgb.cols && depth.rows == frame.rgb.rows &&
+                            depthK.fx == frame.intrinsics.fx && depthK.fy == frame.intrinsics.fy &&
+                            depthK.cx == frame.intrinsics.cx && depthK.cy == frame.intrinsics.cy;
     if (sameCamera) {
       frame.depth = depth;
     } else {

@@ -1,4 +1,6 @@
 #include <dynslam/io/DepthRegistration.h>
+#include <dynslam/io/ObservationConversion.h>
+#include <dynslam/testing/SyntheticObservations.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -58,4 +60,22 @@ TEST(DepthRegistration, RangesBecomeDepthsAlongTheAxis) {
   io::rangesToDepths(r, k);
   EXPECT_NEAR(r.at<float>(0, 0), 1.0f, 1e-6);
   EXPECT_NEAR(r.at<float>(0, 1), std::sqrt(2.0f), 1e-6);
+}
+
+// A colour camera with other intrinsics at the depth camera's place (7-Scenes: depth f 585 px,
+// colour f 525 px; MRPT's doDepthAndIntensityCamerasCoincide() compares the poses only): the
+// depth comes out registered to the colour image, a point at depth pixel u landing at colour
+// pixel cx + (u - cx) * 450 / 500.
+TEST(DepthRegistration, AColourCameraWithOtherIntrinsicsAtTheSamePlaceGetsRegisteredDepth) {
+  auto obs = dynslam::testing::makeScan(1.0, 64, 48);
+  for (int v = 0; v < 48; ++v)
+    for (int u = 0; u < 64; ++u) obs->rangeImage(v, u) = 0;
+  obs->rangeImage(24, 52) = 2000;  // 20 px right of the principal point (32, 24)
+  obs->cameraParamsIntensity.setIntrinsicParamsFromValues(450, 450, 32, 24);
+  ASSERT_TRUE(obs->doDepthAndIntensityCamerasCoincide());
+  core::Frame frame;
+  io::fillFrameFromRgbd(*obs, frame);
+  EXPECT_DOUBLE_EQ(frame.intrinsics.fx, 450.0);
+  ASSERT_EQ(cv::countNonZero(frame.depth), 1);
+  EXPECT_FLOAT_EQ(frame.depth.at<float>(24, 50), 2.0f) << "32 + 20 * 450 / 500 = 50";
 }

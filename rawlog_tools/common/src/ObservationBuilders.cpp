@@ -83,9 +83,9 @@ std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const Rg
     obs->intensityImage.setExternalStorage(frame.colour.externalName);
   else
     obs->intensityImage = mrpt::img::CImage(frame.colour.pixels, mrpt::img::DEEP_COPY);
-  obs->cameraParamsIntensity =
-      makeCamera(frame.intrinsics, frame.colour.width, frame.colour.height);
-  // relativePoseIntensityWRTDepth keeps its default: the depth is registered to colour.
+  obs->cameraParamsIntensity = makeCamera(frame.colourIntrinsics.value_or(frame.intrinsics),
+                                          frame.colour.width, frame.colour.height);
+  // relativePoseIntensityWRTDepth keeps its default: the cameras share centre and axes.
   return obs;
 }
 

@@ -37,16 +37,21 @@ struct RgbdFrame {
   float rangeUnits = 0.001f;
   /// Depth beyond this is not trusted by MRPT consumers (CObservation3DRangeScan::maxRange).
   float maxRange = 10.0f;
-  /// Used for both the depth and the colour camera: depth is registered to colour.
+  /// The depth camera's; the colour camera's too unless colourIntrinsics is given.
   PinholeIntrinsics intrinsics;
+  /// The colour camera's when they differ from the depth camera's (same optical centre and
+  /// axes, e.g. 7-Scenes: colour f = 525 px, depth f = 585 px): readers then register the
+  /// depth to the colour image (io::fillFrameFromRgbd).
+  std::optional<PinholeIntrinsics> colourIntrinsics;
   StoredColourImage colour;
   /// Names the depth source in error messages (e.g. the PNG path).
   std::string depthSourceName;
 };
 
 /// range_is_depth = true, hasRangeImage = hasIntensityImage = true, cameraParams and
-/// cameraParamsIntensity carry the same intrinsics and their image sizes;
-/// relativePoseIntensityWRTDepth keeps MRPT's default (the cameras coincide).
+/// cameraParamsIntensity carry the depth and the colour intrinsics (the same unless
+/// colourIntrinsics is set) and their image sizes; relativePoseIntensityWRTDepth keeps MRPT's
+/// default (the cameras share their optical centre and axes).
 /// Throws ConversionError when depth is not CV_16UC1 or its size differs from the colour image.
 std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const RgbdFrame& frame);
 
