@@ -1,12 +1,44 @@
 #include "dynslam/io/DepthRegistration.h"
 
 #include <cmath>
+#include <vector>
 
 namespace dynslam::io {
+
+namespace {
+
+/// The cameras share centre and axes (7-Scenes: only the focal lengths differ): a pixel's target
+/// does not depend on its depth, so columns and rows map once (3.7 ms -> well under 1 ms per
+/// 640x480 frame).
+cv::Mat registerSameCentre(const cv::Mat& depth, const core::CameraIntrinsics& from,
+                           const core::CameraIntrinsics& to) {
+  cv::Mat out(to.height, to.width, CV_32FC1, cv::Scalar(0));
+  std::vector<int> column(depth.cols), row(depth.rows);
+  for (int u = 0; u < depth.cols; ++u)
+    column[u] = static_cast<int>(std::lround(to.fx * ((u - from.cx) / from.fx) + to.cx));
+  for (int v = 0; v < depth.rows; ++v)
+    row[v] = static_cast<int>(std::lround(to.fy * ((v - from.cy) / from.fy) + to.cy));
+  for (int v = 0; v < depth.rows; ++v) {
+    if (row[v] < 0 || row[v] >= to.height) continue;
+    const float* in = depth.ptr<float>(v);
+    float* dst = out.ptr<float>(row[v]);
+    for (int u = 0; u < depth.cols; ++u) {
+      const float z = in[u];
+      const int uu = column[u];
+      if (!(z > 0) || uu < 0 || uu >= to.width) continue;
+      if (dst[uu] == 0.f || z < dst[uu]) dst[uu] = z;
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 cv::Mat registerDepth(const cv::Mat& depth, const core::CameraIntrinsics& from,
                       const core::CameraIntrinsics& to, const Eigen::Isometry3d& T_to_from) {
   CV_Assert(depth.type() == CV_32FC1);
+  if (T_to_from.translation().isZero(1e-12) && T_to_from.linear().isIdentity(1e-12))
+    return registerSameCentre(depth, from, to);
   cv::Mat out(to.height, to.width, CV_32FC1, cv::Scalar(0));
   for (int v = 0; v < depth.rows; ++v) {
     const float* row = depth.ptr<float>(v);
