@@ -37,6 +37,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
       c.read_double(s, "rigid_inlier_threshold", p.rigid.ransac.inlier_threshold);
   p.rigid.min_members = c.read_int(s, "rigid_min_members", p.rigid.min_members);
   p.rigid.noise_gates = core::readBool(c, s, "rigid_noise_gates", p.rigid.noise_gates);
+  p.rigid.rotation_prior_sigma =
+      c.read_double(s, "rigid_rotation_prior_sigma", p.rigid.rotation_prior_sigma);
   p.camera.ransac.iterations = c.read_int(s, "camera_iterations", p.camera.ransac.iterations);
   p.camera.ransac.inlier_threshold =
       c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);
@@ -87,6 +89,9 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
         "fewer inliers than this: no rigid set on the object this frame");
   core::writeKey(c, s, "rigid_noise_gates", p.rigid.noise_gates,
         "true: a pair noisier than tau gets 3 sigma of its depth noise as gate; false: tau");
+  core::writeKey(c, s, "rigid_rotation_prior_sigma", p.rigid.rotation_prior_sigma,
+                 "rad per frame; > 0: a rigid set's own rotation is predicted to stay, and the "
+                 "registered one blended with it by their variances (not the method; 0: off)");
   core::writeKey(c, s, "camera_iterations", p.camera.ransac.iterations,
         "RANSAC hypotheses of the camera motion from background points");
   core::writeKey(c, s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold,
@@ -140,6 +145,9 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
     fail("rigid_inlier_threshold", std::to_string(p.rigid.ransac.inlier_threshold), "must be > 0");
   if (p.rigid.min_members < 3)
     fail("rigid_min_members", std::to_string(p.rigid.min_members), "must be >= 3");
+  if (!(p.rigid.rotation_prior_sigma >= 0))
+    fail("rigid_rotation_prior_sigma", std::to_string(p.rigid.rotation_prior_sigma),
+         "must be >= 0");
   if (p.camera.ransac.iterations < 1)
     fail("camera_iterations", std::to_string(p.camera.ransac.iterations), "must be >= 1");
   if (!(p.camera.ransac.inlier_threshold > 0))

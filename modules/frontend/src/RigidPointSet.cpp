@@ -22,10 +22,45 @@ AdaptiveRigidPointSet::AdaptiveRigidPointSet(RigidPointSetParams params, std::ui
 void AdaptiveRigidPointSet::reset() {
   members_.clear();
   motion_ = {};
+  own_rotation_.setIdentity();
   virtual_centroid_.setZero();
 }
 
-bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
+void AdaptiveRigidPointSet::applyRotationPrior(RigidMotion& motion, const std::vector<int>& inliers,
+                                               const std::vector<Eigen::Vector3d>& p,
+                                               const std::vector<Eigen::Vector3d>& q,
+                                               const std::vector<double>& weights,
+                                               const Eigen::Matrix3d& cameraRotation,
+                                               bool continued) {
+  const double sigma = params_.rotation_prior_sigma;
+  if (!(sigma > 0) || weights.size() != p.size() || inliers.empty()) return;
+  double wSum = 0;
+  Eigen::Vector3d pMean = Eigen::Vector3d::Zero(), qMean = Eigen::Vector3d::Zero();
+  for (int i : inliers) {
+    wSum += weights[size_t(i)];
+    pMean += weights[size_t(i)] * p[size_t(i)];
+    qMean += weights[size_t(i)] * q[size_t(i)];
+  }
+  pMean /= wSum;
+  qMean /= wSum;
+  // Rotation information of the weighted Kabsch fit: about (2/3) sum w |p - mean|^2 per axis.
+  double information = 0;
+  for (int i : inliers) information += weights[size_t(i)] * (p[size_t(i)] - pMean).squaredNorm();
+  const double measuredVariance = 1.5 / std::max(information, 1e-12);
+  // Predicted: the set keeps its own rotation (a new one: none), carried into this camera frame.
+  const Eigen::Matrix3d own =
+      continued ? Eigen::Matrix3d(cameraRotation * own_rotation_ * cameraRotation.transpose())
+                : Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d predicted = own * cameraRotation;
+  const double gain = sigma * sigma / (sigma * sigma + measuredVariance);
+  const Eigen::AngleAxisd correction(predicted.transpose() * motion.R);
+  motion.R = predicted *
+             Eigen::AngleAxisd(gain * correction.angle(), correction.axis()).toRotationMatrix();
+  motion.t = qMean - motion.R * pMean;
+}
+
+bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
+                                   const Eigen::Matrix3d& cameraRotation) {
   last_ = {};
   std::vector<Eigen::Vector3d> p, q;
   p.reserve(pairs.size());
@@ -62,6 +97,8 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
                           std::back_inserter(last_.left));
       members_ = std::move(ids);
       motion_ = r->motion;
+      applyRotationPrior(motion_, r->inliers, p, q, weights, cameraRotation, true);
+      own_rotation_ = motion_.R * cameraRotation.transpose();
       virtual_centroid_ = motion_.apply(virtual_centroid_);
       return true;
     }
@@ -73,6 +110,8 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs) {
   if (!r || r->inliers.size() < minMembers) return false;
   members_ = idsOf(pairs, r->inliers);
   motion_ = r->motion;
+  applyRotationPrior(motion_, r->inliers, p, q, weights, cameraRotation, false);
+  own_rotation_ = motion_.R * cameraRotation.transpose();
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (int i : r->inliers) c += q[size_t(i)];
   virtual_centroid_ = c / double(r->inliers.size());

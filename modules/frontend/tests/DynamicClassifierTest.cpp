@@ -521,6 +521,8 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
             std::string::npos);
   EXPECT_NE(messageOf("far_object_pixel_sigma = 0\n").find("far_object_pixel_sigma"),
             std::string::npos);
+  EXPECT_NE(messageOf("rigid_rotation_prior_sigma = -0.01\n").find("rigid_rotation_prior_sigma"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -43,6 +43,12 @@ struct RigidPointSetParams {
   /// reduction of the window depth); false: tau for every pair, the method.
   bool noise_gates = true;
   double point_noise_reduction = 4.0;
+  /// rad per frame; > 0: the set's own rotation (the camera's removed) is predicted to stay what
+  /// it was (none for a new set), with this sigma, and the precise registration's rotation is
+  /// blended with the prediction by their variances (the registration's from the depth noise
+  /// and the members' spread); the translation then follows from the weighted centroids. Not
+  /// the method (0: off). Needs depth_sigma_z2 > 0 and the camera's rotation in update().
+  double rotation_prior_sigma = 0.0;
 };
 
 /// What the last update did to the membership.
@@ -55,9 +61,12 @@ class AdaptiveRigidPointSet {
  public:
   explicit AdaptiveRigidPointSet(RigidPointSetParams params = {}, std::uint32_t seed = 1);
 
-  /// One frame of the object: its pairs from the previous frame to this one. Returns true when
-  /// the object has a rigid set after the update (members, motion and virtual centroid valid).
-  bool update(const std::vector<PointPair>& pairs);
+  /// One frame of the object: its pairs from the previous frame to this one, and the camera's
+  /// rotation over it (static points: q = R p + t; used by rotation_prior_sigma only). Returns
+  /// true when the object has a rigid set after the update (members, motion and virtual
+  /// centroid valid).
+  bool update(const std::vector<PointPair>& pairs,
+              const Eigen::Matrix3d& cameraRotation = Eigen::Matrix3d::Identity());
   /// Forgets the set (the object stopped, or left the view).
   void reset();
 
@@ -75,7 +84,16 @@ class AdaptiveRigidPointSet {
   std::mt19937 rng_;
   std::vector<std::int64_t> members_;
   RigidMotion motion_;
+  /// The set's own rotation over the last frame, the camera's removed (motion_.R times the
+  /// camera rotation's inverse), in the current camera frame; the prior's prediction.
+  Eigen::Matrix3d own_rotation_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d virtual_centroid_ = Eigen::Vector3d::Zero();
+
+  /// rotation_prior_sigma: blends `motion`'s rotation with the predicted one (see the params).
+  void applyRotationPrior(RigidMotion& motion, const std::vector<int>& inliers,
+                          const std::vector<Eigen::Vector3d>& p,
+                          const std::vector<Eigen::Vector3d>& q, const std::vector<double>& weights,
+                          const Eigen::Matrix3d& cameraRotation, bool continued);
   RigidSetUpdate last_;
 };
 
