@@ -26,7 +26,7 @@ void AdaptiveRigidPointSet::reset() {
   virtual_centroid_.setZero();
 }
 
-void AdaptiveRigidPointSet::applyRotationPrior(RigidMotion& motion, const std::vector<int>& inliers,
+void AdaptiveRigidPointSet::applyRotationPrior(const std::vector<int>& inliers,
                                                const std::vector<Eigen::Vector3d>& p,
                                                const std::vector<Eigen::Vector3d>& q,
                                                const std::vector<double>& weights,
@@ -53,10 +53,11 @@ void AdaptiveRigidPointSet::applyRotationPrior(RigidMotion& motion, const std::v
                 : Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d predicted = own * cameraRotation;
   const double gain = sigma * sigma / (sigma * sigma + measuredVariance);
-  const Eigen::AngleAxisd correction(predicted.transpose() * motion.R);
-  motion.R = predicted *
-             Eigen::AngleAxisd(gain * correction.angle(), correction.axis()).toRotationMatrix();
-  motion.t = qMean - motion.R * pMean;
+  const Eigen::AngleAxisd correction(predicted.transpose() * motion_.R);
+  motion_.R = predicted *
+              Eigen::AngleAxisd(gain * correction.angle(), correction.axis()).toRotationMatrix();
+  motion_.t = qMean - motion_.R * pMean;
+  own_rotation_ = motion_.R * cameraRotation.transpose();
 }
 
 bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
@@ -97,8 +98,7 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
                           std::back_inserter(last_.left));
       members_ = std::move(ids);
       motion_ = r->motion;
-      applyRotationPrior(motion_, r->inliers, p, q, weights, cameraRotation, true);
-      own_rotation_ = motion_.R * cameraRotation.transpose();
+      applyRotationPrior(r->inliers, p, q, weights, cameraRotation, true);
       virtual_centroid_ = motion_.apply(virtual_centroid_);
       return true;
     }
@@ -110,8 +110,7 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
   if (!r || r->inliers.size() < minMembers) return false;
   members_ = idsOf(pairs, r->inliers);
   motion_ = r->motion;
-  applyRotationPrior(motion_, r->inliers, p, q, weights, cameraRotation, false);
-  own_rotation_ = motion_.R * cameraRotation.transpose();
+  applyRotationPrior(r->inliers, p, q, weights, cameraRotation, false);
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (int i : r->inliers) c += q[size_t(i)];
   virtual_centroid_ = c / double(r->inliers.size());

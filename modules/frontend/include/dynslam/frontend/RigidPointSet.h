@@ -89,9 +89,9 @@ class AdaptiveRigidPointSet {
   Eigen::Matrix3d own_rotation_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d virtual_centroid_ = Eigen::Vector3d::Zero();
 
-  /// rotation_prior_sigma: blends `motion`'s rotation with the predicted one (see the params).
-  void applyRotationPrior(RigidMotion& motion, const std::vector<int>& inliers,
-                          const std::vector<Eigen::Vector3d>& p,
+  /// rotation_prior_sigma: blends motion_'s rotation with the predicted one (see the params)
+  /// and keeps the result's own rotation for the next frame's prediction.
+  void applyRotationPrior(const std::vector<int>& inliers, const std::vector<Eigen::Vector3d>& p,
                           const std::vector<Eigen::Vector3d>& q, const std::vector<double>& weights,
                           const Eigen::Matrix3d& cameraRotation, bool continued);
   RigidSetUpdate last_;
