@@ -8,8 +8,8 @@ namespace dynslam::io {
 namespace {
 
 /// The cameras share centre and axes (7-Scenes: only the focal lengths differ): a pixel's target
-/// does not depend on its depth, so columns and rows map once (3.7 ms -> well under 1 ms per
-/// 640x480 frame).
+/// does not depend on its depth, so columns and rows map once (7-Scenes RGB-D only, the whole
+/// pipeline: 63.6 FPS with the general warp, 76.8 with this; bench/estimator_7scenes.sh).
 cv::Mat registerSameCentre(const cv::Mat& depth, const core::CameraIntrinsics& from,
                            const core::CameraIntrinsics& to) {
   cv::Mat out(to.height, to.width, CV_32FC1, cv::Scalar(0));
