@@ -276,8 +276,9 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
       truths.push_back(&o);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const auto masks = stages ? stages->masks(f, detections, sequence->camera())
-                              : segmenter.segment(f.image.depth, detections);
+    const auto masks =
+        stages ? stages->masks(f, detections, sequence->camera())
+               : segmenter.segment(f.image.depth, detections, {}, sequence->camera().fy);
     if (i % every != 0) continue;
     s.ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
@@ -311,8 +312,9 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
         sc.precision.push_back(area ? double(hit) / area : 0);
         sc.recall.push_back(double(hit) / o.visible_pixels);
         sc.boxIoU.push_back(double(o.visible_pixels) / std::max(1, m.roi.area()));
-        sc.iouAlone.push_back(
-            segmentation::maskIoU(segmenter.segmentOne(f.image.depth, detections[k], k), truth));
+        sc.iouAlone.push_back(segmentation::maskIoU(
+            segmenter.segmentOne(f.image.depth, detections[k], k, 0, sequence->camera().fy),
+            truth));
         tallyPixels(f.image.label, f.image.depth, uint16_t(o.id), m, sc);
       }
       if (!m.valid) continue;

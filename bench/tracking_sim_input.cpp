@@ -91,7 +91,8 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
     frame.intrinsics = simulator.camera();
     frame.detections = detector.detect(frame);
     if (s.depth == "segmentation") {
-      frame.object_masks = segmenter.segment(frame.depth, frame.detections);
+      frame.object_masks =
+          segmenter.segment(frame.depth, frame.detections, {}, frame.intrinsics.fy);
     } else if (s.depth == "truth") {
       for (size_t k = 0; k < frame.detections.size(); ++k)
         for (const auto& o : sf.objects)

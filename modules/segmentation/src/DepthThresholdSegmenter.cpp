@@ -26,6 +26,11 @@ void DepthThresholdParams::validate() const {
                                                     {"e_other_rigid", e_other_rigid}};
   for (const auto& [name, e] : margins)
     if (!(e > 0)) fail(std::string(name) + " = " + std::to_string(e) + ": must be > 0 (metres)");
+  if (!(max_height_person >= 0))
+    fail("max_height_person = " + std::to_string(max_height_person) +
+         ": must be >= 0 (m; 0 = off)");
+  if (!(expected_depth_band >= 0 && expected_depth_band < 1))
+    fail("expected_depth_band = " + std::to_string(expected_depth_band) + ": must be in [0, 1)");
   if (!(min_valid_fraction > 0 && min_valid_fraction <= 1))
     fail("min_valid_fraction = " + std::to_string(min_valid_fraction) + ": must be in (0, 1]");
 }
@@ -40,6 +45,13 @@ double DepthThresholdSegmenter::marginFor(const core::Detection& detection) cons
   if (detection.category == "car") return params_.e_car;
   return detection.model == core::MotionModel::Rigid ? params_.e_other_rigid
                                                      : params_.e_other_nonrigid;
+}
+
+double DepthThresholdSegmenter::maxDepthFor(const core::Detection& detection, double fy) const {
+  const double height = detection.category == "person" ? params_.max_height_person : 0.0;
+  if (!(height > 0 && fy > 0 && detection.box.height > 0))
+    return std::numeric_limits<double>::infinity();
+  return height * fy / detection.box.height;
 }
 
 cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size) {
@@ -120,11 +132,11 @@ constexpr double kFewBehind = 0.25;
 // than 2-means: both worse on indoor_people_high.)
 TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi, const cv::Rect& occluder,
                               const std::vector<float>& sorted, const TwoMeansResult& c,
-                              double margin, double e, int m) {
+                              double margin, double e, int m, double maxDepth) {
   std::vector<float> behind;
   if (c.far_count < kFewBehind * (c.near_count + c.far_count)) {
     forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point p, float z) {
-      if (!occluder.contains(p) && z > c.near_mean + margin) behind.push_back(z);
+      if (!occluder.contains(p) && z > c.near_mean + margin && z <= maxDepth) behind.push_back(z);
     });
   }
   const bool beside = behind.size() >= 4;  // else too little to tell the object from background
@@ -149,10 +161,46 @@ bool nearIsExpected(const TwoMeansResult& c, double expected, bool rule) {
   return core::depthRatio(c.near_mean, expected) > core::depthRatio(c.far_mean, expected);
 }
 
+// expected_depth_band: how far (in ratio) both clusters must be from the expected depth before
+// its own samples are sought, and how many of them it takes.
+constexpr double kExpectedMiss = 0.15;
+constexpr int kExpectedMinSamples = 3;
+
+// The clusters with the object's replaced by the depths within `band` of `expected` among m
+// grid samples over the whole box `roi` (the hidden person shows above or beside its occluder,
+// not in the candidate box it covers) when neither cluster of `c` is within kExpectedMiss of
+// it (expected_depth_band); false, and `c` and `nearIsObject` untouched, otherwise. The
+// nearest of `c`'s clusters stays beside the object: as its occluder when in front of it.
+bool objectAtExpected(const cv::Mat& depth, const cv::Rect& roi, int m, double expected,
+                      double band, TwoMeansResult& c, bool& nearIsObject) {
+  if (!(band > 0 && expected > 0)) return false;
+  double best = core::depthRatio(c.far_mean, expected);
+  if (c.near_count > 0) best = std::max(best, core::depthRatio(c.near_mean, expected));
+  if (best >= 1 - kExpectedMiss) return false;
+  double sum = 0;
+  int count = 0;
+  forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point, float z) {
+    if (std::abs(z - expected) > band * expected) return;
+    sum += z;
+    ++count;
+  });
+  if (count < kExpectedMinSamples) return false;
+  const double object = sum / count;
+  const double other = c.near_count > 0 ? c.near_mean : c.far_mean;
+  const int otherCount = c.near_count > 0 ? c.near_count : c.far_count;
+  nearIsObject = object < other;
+  c.two_clusters = true;
+  c.near_mean = nearIsObject ? object : other;
+  c.near_count = nearIsObject ? count : otherCount;
+  c.far_mean = nearIsObject ? other : object;
+  c.far_count = nearIsObject ? otherCount : count;
+  return true;
+}
+
 }  // namespace
 
 bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::Rect& roi,
-                                                TwoMeansResult& out,
+                                                double maxDepth, TwoMeansResult& out,
                                                 std::vector<float>& samples) const {
   if (roi.empty()) return false;
   // Steps 1-3: the candidate box M (same centre, half the size), m grid samples, 2-means.
@@ -162,14 +210,22 @@ bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::
   const int needed =
       std::max(1, static_cast<int>(std::ceil(params_.min_valid_fraction * gridPoints)));
   if (static_cast<int>(samples.size()) < needed) return false;
+  // Samples beyond the object's farthest possible depth are background (max_height_person); when
+  // fewer than two are left, the box shows nothing of it at a possible depth and all stay.
+  const auto beyond =
+      std::count_if(samples.begin(), samples.end(), [&](float z) { return z > maxDepth; });
+  if (beyond > 0 && samples.size() - size_t(beyond) >= 2)
+    samples.erase(
+        std::remove_if(samples.begin(), samples.end(), [&](float z) { return z > maxDepth; }),
+        samples.end());
   out = twoMeans(samples);
   return true;
 }
 
 core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
                                                      const core::Detection& detection,
-                                                     int detectionIndex,
-                                                     double expectedDepth) const {
+                                                     int detectionIndex, double expectedDepth,
+                                                     double fy) const {
   if (depth.type() != CV_32FC1)
     throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
   core::ObjectMask out;
@@ -177,22 +233,25 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
   out.roi = pixelRoi(detection.box, depth.size());
   TwoMeansResult clusters;
   std::vector<float> samples;
-  if (!candidateClusters(depth, out.roi, clusters, samples)) return out;
+  const double maxDepth = maxDepthFor(detection, fy);
+  if (!candidateClusters(depth, out.roi, maxDepth, clusters, samples)) return out;
   bool nearIsObject = false;
   if (params_.object_cluster == ObjectCluster::Larger)
     nearIsObject = clusters.near_count > clusters.far_count;
   else if (params_.object_cluster == ObjectCluster::OccluderAware)  // no other box: no occluder
     nearIsObject = clusters.two_clusters &&
                    clusters.far_mean - clusters.near_mean > marginFor(detection);
-  return segmentWith(depth, detection, detectionIndex, clusters,
-                     nearIsExpected(clusters, expectedDepth, nearIsObject));
+  nearIsObject = nearIsExpected(clusters, expectedDepth, nearIsObject);
+  objectAtExpected(depth, out.roi, params_.m, expectedDepth, params_.expected_depth_band, clusters,
+                   nearIsObject);
+  return segmentWith(depth, detection, detectionIndex, clusters, nearIsObject, maxDepth);
 }
 
 core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
                                                       const core::Detection& detection,
                                                       int detectionIndex,
                                                       const TwoMeansResult& clusters,
-                                                      bool nearIsObject) const {
+                                                      bool nearIsObject, double maxDepth) const {
   core::ObjectMask out;
   out.detection = detectionIndex;
   out.roi = pixelRoi(detection.box, depth.size());
@@ -214,6 +273,7 @@ core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
   sampleGrid(depth, cv::Rect2d(box.x, box.y, box.width, box.height / 2), params_.n, background);
   out.d_b = threeSigmaMean(background);
   out.t_max = out.d_b - out.d_t > e ? (out.d_t + out.d_b) / 2 : out.d_t + e;
+  out.t_max = std::max(std::min(out.t_max, maxDepth), out.d_t);  // max_height_person
 
   // Step 8. The lower bound stays above 0 so that missing depth (0) never joins the mask when
   // d_t - e <= 0 (a car nearer than 3 m).
@@ -225,7 +285,7 @@ core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
 
 std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     const cv::Mat& depth, const std::vector<core::Detection>& detections,
-    const std::vector<double>& expectedDepth) const {
+    const std::vector<double>& expectedDepth, double fy) const {
   const auto expected = [&](size_t i) { return i < expectedDepth.size() ? expectedDepth[i] : 0.0; };
   if (depth.type() != CV_32FC1 && !detections.empty())
     throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
@@ -233,7 +293,7 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
   masks.reserve(detections.size());
   if (params_.object_cluster != ObjectCluster::OccluderAware) {
     for (size_t i = 0; i < detections.size(); ++i)
-      masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i), expected(i)));
+      masks.push_back(segmentOne(depth, detections[i], static_cast<int>(i), expected(i), fy));
     resolveOverlaps(masks, depth);
     return masks;
   }
@@ -242,10 +302,14 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
   std::vector<TwoMeansResult> clusters(n);
   std::vector<std::vector<float>> samples(n);
   std::vector<char> ok(n);
+  std::vector<double> maxDepth(n);
   for (size_t i = 0; i < n; ++i) {
     rois[i] = pixelRoi(detections[i].box, depth.size());
-    ok[i] = candidateClusters(depth, rois[i], clusters[i], samples[i]);
+    maxDepth[i] = maxDepthFor(detections[i], fy);
+    ok[i] = candidateClusters(depth, rois[i], maxDepth[i], clusters[i], samples[i]);
   }
+  std::vector<TwoMeansResult> chosen(n);  // the clusters each mask was cut on
+  std::vector<char> chosenNear(n);
   for (size_t i = 0; i < n; ++i) {
     if (!ok[i]) {
       core::ObjectMask empty;
@@ -269,12 +333,30 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
         continue;
       if (!standsInFront(depth, rois[j], rois[i], c, ej / 2, params_.m)) continue;
       nearIsObject = false;
-      c = behindOccluder(depth, rois[i], rois[j], samples[i], c, ej / 2, e, params_.m);
+      c = behindOccluder(depth, rois[i], rois[j], samples[i], c, ej / 2, e, params_.m, maxDepth[i]);
     }
-    masks.push_back(
-        segmentWith(depth, detections[i], int(i), c, nearIsExpected(c, expected(i), nearIsObject)));
+    nearIsObject = nearIsExpected(c, expected(i), nearIsObject);
+    objectAtExpected(depth, rois[i], params_.m, expected(i), params_.expected_depth_band, c,
+                     nearIsObject);
+    masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject, maxDepth[i]));
+    chosen[i] = c;
+    chosenNear[i] = nearIsObject;
   }
   resolveOverlaps(masks, depth);
+  if (!params_.retry_taken_surface) return masks;
+  // A mask the overlap step left empty was cut on another object's surface, which holds all of
+  // its pixels: two detections cannot be one surface, so its other cluster is cut instead
+  // (when more than e away), and the overlaps are resolved again.
+  bool retried = false;
+  for (size_t i = 0; i < n; ++i) {
+    const TwoMeansResult& c = chosen[i];
+    if (!masks[i].valid || cv::countNonZero(masks[i].mask) > 0 || !c.two_clusters ||
+        c.far_mean - c.near_mean <= marginFor(detections[i]))
+      continue;
+    masks[i] = segmentWith(depth, detections[i], int(i), c, !chosenNear[i], maxDepth[i]);
+    retried = true;
+  }
+  if (retried) resolveOverlaps(masks, depth);
   return masks;
 }
 

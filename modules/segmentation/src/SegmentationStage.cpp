@@ -41,6 +41,9 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.e_other_nonrigid = c.read_double(s, "e_other_nonrigid", p.e_other_nonrigid);
   p.e_other_rigid = c.read_double(s, "e_other_rigid", p.e_other_rigid);
   p.min_valid_fraction = c.read_double(s, "min_valid_fraction", p.min_valid_fraction);
+  p.max_height_person = c.read_double(s, "max_height_person", p.max_height_person);
+  p.expected_depth_band = c.read_double(s, "expected_depth_band", p.expected_depth_band);
+  p.retry_taken_surface = core::readBool(c, s, "retry_taken_surface", p.retry_taken_surface);
   p.object_cluster = core::readKeyword(c, s, "object_cluster", p.object_cluster, kClusters);
   p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
   p.object_depth = core::readKeyword(c, s, "object_depth", p.object_depth, kObjectDepths);
@@ -58,6 +61,18 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   core::writeKey(c, s, "e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
   core::writeKey(c, s, "min_valid_fraction", p.min_valid_fraction,
         "of the m samples with depth, else the mask is not valid (empty)");
+  core::writeKey(
+      c, s, "max_height_person", p.max_height_person,
+      "m; 0 = off. Not the method: a person is at most this tall, so a box h px high holds "
+      "nothing of it beyond max_height_person * fy / h; farther samples are background");
+  core::writeKey(
+      c, s, "expected_depth_band", p.expected_depth_band,
+      "0 = off. With boxes = tracked_detections, when neither cluster is within 15 % of the "
+      "track's depth, the samples within this fraction of it are the object (not the method)");
+  core::writeKey(
+      c, s, "retry_taken_surface", p.retry_taken_surface,
+      "with occluder_aware: a mask the overlap step leaves empty (another object's surface) "
+      "is cut again on its other cluster (not the method)");
   core::writeKey(
       c, s, "object_cluster", std::string(core::wordOf(p.object_cluster, kClusters)),
       "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
@@ -105,7 +120,7 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
     trackOf.push_back(int(i));
   }
   requireDepth(frame, boxes.size(), "predicted boxes");
-  auto masks = segmenter_.segment(frame.depth, boxes);
+  auto masks = segmenter_.segment(frame.depth, boxes, {}, frame.intrinsics.fy);
   for (size_t k = 0; k < masks.size(); ++k) {
     masks[k].detection = -1;
     masks[k].track = trackOf[k];
@@ -126,7 +141,7 @@ void SegmentationStage::segmentTrackedDetections(core::Frame& frame) const {
       trackOf[size_t(d)] = int(k);
     }
   }
-  auto masks = segmenter_.segment(frame.depth, frame.detections, expected);
+  auto masks = segmenter_.segment(frame.depth, frame.detections, expected, frame.intrinsics.fy);
   for (size_t i = 0; i < masks.size(); ++i) masks[i].track = trackOf[i];
   // The detections' masks are replaced; masks of predicted boxes (detection -1) stay.
   for (const auto& m : frame.object_masks)
@@ -141,7 +156,7 @@ void SegmentationStage::process(core::Frame& frame) {
     segmentTrackedDetections(frame);
   } else {
     requireDepth(frame, frame.detections.size(), "detections");
-    frame.object_masks = segmenter_.segment(frame.depth, frame.detections);
+    frame.object_masks = segmenter_.segment(frame.depth, frame.detections, {}, frame.intrinsics.fy);
   }
   ++frames_;
   for (const auto& m : frame.object_masks) {

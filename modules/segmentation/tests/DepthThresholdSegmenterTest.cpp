@@ -171,6 +171,35 @@ TEST(DepthThresholdSegmenter, TheLargerClusterVariantTakesTheMajorityOfTheCandid
   EXPECT_DOUBLE_EQ(larger.t_min, 0.5);
 }
 
+// max_height_person (not the method): a box 60 px high, seen with fy = 100 px, holds nothing
+// of a person at most 2.2 m tall beyond 2.2 * 100 / 60 = 3.67 m. A person at 2 m covers 5 of
+// M's 8 sample columns and a wall at 5 m the rest: the method's far cluster is the wall; with
+// the bound the wall's samples are background and the person is the object.
+TEST(DepthThresholdSegmenter, MaxHeightLeavesTheWallBeyondTheTallestPersonOut) {
+  cv::Mat depth(120, 160, CV_32FC1, cv::Scalar(5.0f));
+  depth(cv::Rect(55, 0, 17, 120)).setTo(2.0f);
+  segmentation::DepthThresholdParams p;
+  EXPECT_DOUBLE_EQ(DepthThresholdSegmenter(p).segment(depth, {detection(kBox)}, {}, 100)[0].d_t,
+                   5.0);
+  p.max_height_person = 2.2;
+  const DepthThresholdSegmenter bounded(p);
+  EXPECT_NEAR(bounded.maxDepthFor(detection(kBox), 100), 2.2 * 100 / 60, 1e-9);
+  const auto m = bounded.segment(depth, {detection(kBox)}, {}, 100);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_DOUBLE_EQ(m[0].d_t, 2.0);
+  EXPECT_LE(m[0].t_max, 2.2 * 100 / 60);
+  EXPECT_EQ(cv::countNonZero(m[0].mask), 17 * 60) << "the person's pixels, none of the wall";
+  EXPECT_DOUBLE_EQ(bounded.segmentOne(depth, detection(kBox), 0, 0, 100).d_t, 2.0);
+  EXPECT_DOUBLE_EQ(bounded.segment(depth, {detection(kBox)})[0].d_t, 5.0) << "no fy: no bound";
+  EXPECT_DOUBLE_EQ(bounded.segment(depth, {detection(kBox, "car")}, {}, 100)[0].d_t, 5.0)
+      << "cars are not bounded";
+  const auto wallOnly = bounded.segment(depth, {detection({100, 20, 40, 60})}, {}, 100);
+  EXPECT_TRUE(wallOnly[0].valid) << "nothing at a possible depth: every sample stays";
+  EXPECT_DOUBLE_EQ(wallOnly[0].d_t, 5.0);
+  p.max_height_person = -1;
+  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
+}
+
 // object_depth = mask_median (not the method): d_t is the median depth of the final mask, not
 // the mean of the candidate box's cluster. A person-sized box on one body whose upper 60 % is
 // at 2.0 m and lower 40 % at 2.4 m (a leg stepping back): M's rows 20-59 hold 2.0 m down to

@@ -63,6 +63,56 @@ TEST(OccluderAwareCluster, AnExpectedDepthChoosesTheCluster) {
   }
 }
 
+TEST(OccluderAwareCluster, AnExpectedDepthFarFromBothClustersFindsItsOwnSurface) {
+  // expected_depth_band (not the method): a person 2.2 m away of whom only the head shows (the
+  // box's top fifth), the rest hidden by an occluder at 1.2 m that fills the candidate box and
+  // the wall at 5 m beside it. 2-means sees the occluder and the wall; the track's 2.2 m is
+  // within 15 % of neither, and the whole box holds samples at 2.2 m: they are the object.
+  const cv::Rect box(100, 20, 60, 200);
+  cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(5.0f));
+  depth(cv::Rect(115, 20, 30, 40)).setTo(2.2f);
+  depth(cv::Rect(90, 60, 80, 180)).setTo(1.2f);
+  depth(cv::Rect(100, 60, 8, 160)).setTo(5.0f);
+  const auto without = segmenter(ObjectCluster::OccluderAware).segment(depth, {person(box)}, {2.2});
+  EXPECT_NEAR(without[0].d_t, 1.2, 0.01) << "the cluster nearer 2.2 m in ratio: the occluder";
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::OccluderAware;
+  p.expected_depth_band = 0.1;
+  const auto with = DepthThresholdSegmenter(p).segment(depth, {person(box)}, {2.2});
+  ASSERT_TRUE(with[0].valid);
+  EXPECT_NEAR(with[0].d_t, 2.2, 1e-5);
+  EXPECT_NEAR(with[0].d_o, 1.2, 0.01) << "the occluder in front";
+  EXPECT_EQ(cv::countNonZero(with[0].mask), 30 * 40) << "the head, not the occluder or the wall";
+  EXPECT_NEAR(DepthThresholdSegmenter(p).segment(depth, {person(box)}, {1.25})[0].d_t, 1.2, 0.01)
+      << "a cluster within 15 %: the band is not needed";
+  EXPECT_NEAR(DepthThresholdSegmenter(p).segment(depth, {person(box)}, {3.3})[0].d_t, 1.2, 0.01)
+      << "nothing within 10 % of 3.3 m: the candidate box's own (only) cluster";
+}
+
+TEST(OccluderAwareCluster, AMaskTheOverlapStepLeavesEmptyIsCutOnItsOtherCluster) {
+  // retry_taken_surface (not the method): B, whose own surface (2.4 m) shows beside A (1.2 m),
+  // is cut on A's surface (here because its expected depth says so; in the pipeline, a cluster
+  // choice gone wrong), and the overlap step gives all of those pixels to A.
+  const cv::Rect a(100, 20, 60, 200), b(130, 20, 60, 200);
+  cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(5.0f));
+  depth(a).setTo(1.2f);
+  depth(cv::Rect(160, 20, 30, 200)).setTo(2.4f);
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::OccluderAware;
+  p.overlap_rule = segmentation::OverlapRule::Connected;
+  const auto taken = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, {0, 1.2});
+  ASSERT_EQ(taken.size(), 2u);
+  EXPECT_EQ(cv::countNonZero(taken[1].mask), 0);
+  EXPECT_NEAR(taken[1].d_t, 1.2, 1e-5) << "A's surface";
+  p.retry_taken_surface = true;
+  const auto retried = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, {0, 1.2});
+  ASSERT_EQ(retried.size(), 2u);
+  EXPECT_NEAR(retried[1].d_t, 2.4, 1e-5);
+  EXPECT_NEAR(retried[1].d_o, 1.2, 1e-5) << "A in front";
+  EXPECT_EQ(cv::countNonZero(retried[1].mask), 30 * 200) << "B's own surface";
+  EXPECT_EQ(cv::countNonZero(retried[0].mask), 60 * 200) << "A keeps its own";
+}
+
 TEST(OccluderAwareCluster, APersonStandingInFrontIsStillTheOccluder) {
   // B 4 m away (box bottom at y 180) half hidden by A 2 m away (box bottom at y 230, nearer on
   // the floor); wall at 7 m.

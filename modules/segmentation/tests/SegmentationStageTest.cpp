@@ -14,7 +14,9 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   auto stage = registry.create("Segmentation");
   stage->configure(core::IniConfig::fromText("[Segmentation]\nm = 36\nn = 25\ne_person = 0.4\n"
                                              "e_car = 2.5\ne_other_rigid = 2\n"
-                                             "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"),
+                                             "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"
+                                             "max_height_person = 2.2\nexpected_depth_band = 0.1\n"
+                                             "retry_taken_surface = true\n"),
                    "Segmentation");
   const auto& p = dynamic_cast<segmentation::SegmentationStage&>(*stage).options().params;
   EXPECT_EQ(p.m, 36);
@@ -24,6 +26,9 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   EXPECT_EQ(p.e_other_rigid, 2.0);
   EXPECT_EQ(p.e_other_nonrigid, 0.3);
   EXPECT_EQ(p.min_valid_fraction, 0.5);
+  EXPECT_EQ(p.max_height_person, 2.2);
+  EXPECT_EQ(p.expected_depth_band, 0.1);
+  EXPECT_TRUE(p.retry_taken_surface);
 }
 
 TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) {
@@ -34,6 +39,7 @@ TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) 
   EXPECT_EQ(stage.options().params.e_person, 0.5);
   EXPECT_EQ(stage.options().params.e_car, 3.0);
   EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Far);
+  EXPECT_EQ(stage.options().params.max_height_person, 0.0) << "no size bound unless asked";
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\ne_pedestrian = 1\n"), "S"),
                core::ConfigError);
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = near\n"), "S"),
@@ -54,6 +60,8 @@ TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) 
     EXPECT_NE(std::string(e.what()).find("m = 1"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("x.ini"), std::string::npos) << e.what();
   }
+  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nmax_height_person = -2\n"), "S"),
+               core::ConfigError);
 }
 
 TEST(SegmentationStage, WritesOneMaskPerDetectionInOrder) {

@@ -121,6 +121,20 @@ double KalmanBoxTracker::depthFor(const Tracked& tr, const BoxObservation& o) co
   return core::depthRatio(o.depth_alt, d) > core::depthRatio(o.depth, d) ? o.depth_alt : o.depth;
 }
 
+BoxMeasurement KalmanBoxTracker::measurementFor(Tracked& tr, const cv::Rect2f& box, double depth,
+                                                BoxMeasurementCovariance& R) const {
+  const double predicted = tr.filter.state()(kD);
+  const bool gated = params_.depth_gate > 0 && depth > 0 && predicted > 0 &&
+                     tr.track.state == core::TrackState::Confirmed &&
+                     std::abs(depth - predicted) > params_.depth_gate * predicted &&
+                     tr.depth_gated < params_.depth_gate_frames;
+  tr.depth_gated = gated ? tr.depth_gated + 1 : 0;
+  BoxMeasurement z = boxMeasurement(box, gated ? 0.0 : depth);
+  R = measurementNoise(params_.noise, z);        // a gated depth: the variance of an unknown one
+  if (!(depth > 0) || gated) z(kD) = predicted;  // no depth, or held: leave d as it is
+  return z;
+}
+
 void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations,
                                  const cv::Size& image, double threshold, bool coastingOnly,
                                  std::vector<int>& observationOf,
@@ -157,10 +171,9 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
     const int j = observationOf[i];
     if (j >= 0) {
       const BoxObservation& o = observations[j];
-      const double depth = depthFor(tr, o);
-      BoxMeasurement z = boxMeasurement(o.box, depth);
-      if (!(depth > 0)) z(kD) = tr.filter.state()(kD);  // no depth: leave d as it is
-      tr.filter.update(z, measurementNoise(params_.noise, z));
+      BoxMeasurementCovariance R;
+      const BoxMeasurement z = measurementFor(tr, o.box, depthFor(tr, o), R);
+      tr.filter.update(z, R);
       if (params_.reset_at_border) restartCutComponents(tr.filter, o.box, z, image);
       tr.track.detection = j;
       if (!o.appearance.empty() && (tr.appearance.empty() || !occluded(observations, j)))

@@ -34,6 +34,8 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.appearance_memory, "appearance_memory");
   TRACKING_READ(double, t.reid_memory, "reid_memory");
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
+  TRACKING_READ(double, t.depth_gate, "depth_gate");
+  TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -69,6 +71,11 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "
                  "(not the method)");
+  TRACKING_WRITE(t.depth_gate, "depth_gate",
+                 "0 = off; a confirmed track ignores a matched depth this fraction off its "
+                 "prediction (the box still counts; not the method)");
+  TRACKING_WRITE(t.depth_gate_frames, "depth_gate_frames",
+                 "frames in a row depth_gate may hold a track's depth");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");
@@ -102,8 +109,13 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
   if (t.min_hits < 1)
     throw core::ConfigError("[" + section + "] min_hits = " + std::to_string(t.min_hits) + " in " +
                             cfg.source() + ": must be >= 1");
-  const std::pair<double, const char*> unitInterval[] = {
-      {t.reid_max_distance, "reid_max_distance"}, {t.appearance_memory, "appearance_memory"}};
+  if (t.depth_gate_frames < 0)
+    throw core::ConfigError("[" + section +
+                            "] depth_gate_frames = " + std::to_string(t.depth_gate_frames) +
+                            " in " + cfg.source() + ": must be >= 0");
+  const std::pair<double, const char*> unitInterval[] = {{t.reid_max_distance, "reid_max_distance"},
+                                                         {t.appearance_memory, "appearance_memory"},
+                                                         {t.depth_gate, "depth_gate"}};
   for (const auto& [value, key] : unitInterval)
     if (!(value >= 0 && value <= 1))
       throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +

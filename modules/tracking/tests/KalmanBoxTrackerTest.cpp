@@ -256,3 +256,31 @@ TEST(TrackingKalmanBoxTracker, APersonCutByTheImageBorderKeepsItsId) {
   EXPECT_EQ(run(true), 1u);
   EXPECT_GT(run(false), 1u);  // what the option is for (if this fails, the option may go)
 }
+
+TEST(TrackingKalmanBoxTracker, DepthGateHoldsAConfirmedTracksDepthForAFewFrames) {
+  // A person at 2 m, confirmed; from frame 5 the segmentation gives an occluder's surface
+  // (1.5 m) for it while the box walks on 4 px a frame. The depth IoU still accepts the pair
+  // at rho_min 0.5. With depth_gate 0.15 the track keeps its depth for depth_gate_frames (3)
+  // frames and follows the box; then the measurement counts again.
+  for (const double gate : {0.0, 0.15}) {
+    KalmanBoxTrackerParams params;
+    params.min_hits = 1;
+    params.rho_min = 0.5;
+    params.depth_gate = gate;
+    params.depth_gate_frames = 3;
+    KalmanBoxTracker tracker(params);
+    for (int k = 0; k < 5; ++k) step(tracker, k, {person(100 + 4 * k, 100, 60, 180, 2.0)});
+    for (int k = 5; k < 9; ++k) {
+      const auto tracks = step(tracker, k, {person(100 + 4 * k, 100, 60, 180, 1.5)});
+      const core::Track* t = findId(tracks, 1);
+      ASSERT_NE(t, nullptr) << "gate " << gate << ", frame " << k;
+      EXPECT_EQ(t->detection, 0);
+      EXPECT_NEAR(t->box.x, 100 + 4 * k, 1.0) << "the box is updated either way";
+      if (gate > 0 && k < 8) {
+        EXPECT_NEAR(t->depth, 2.0, 0.01) << "frame " << k << ": held";
+      } else {
+        EXPECT_LT(t->depth, 1.9) << "gate " << gate << ", frame " << k << ": updated";
+      }
+    }
+  }
+}

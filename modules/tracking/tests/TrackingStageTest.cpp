@@ -64,13 +64,15 @@ TEST(TrackingStage, RegisteredAndConfiguredFromItsSection) {
 
 TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   const auto keys = core::knownKeys(TrackingOptions());
-  for (const char* key :
-       {"rho_min", "rho_min_coasting", "max_age", "min_hits", "reset_at_border", "meas_center_px",
-        "meas_area_rel", "meas_depth_rel", "meas_ratio", "accel_center_px", "accel_area_rel",
-        "accel_depth", "ratio_walk", "init_rate_center_px", "init_rate_area_rel", "init_rate_depth",
-        "reid_memory", "alternative_depth"})
+  for (const char* key : {"rho_min",         "rho_min_coasting",    "max_age",
+                          "min_hits",        "reset_at_border",     "meas_center_px",
+                          "meas_area_rel",   "meas_depth_rel",      "meas_ratio",
+                          "accel_center_px", "accel_area_rel",      "accel_depth",
+                          "ratio_walk",      "init_rate_center_px", "init_rate_area_rel",
+                          "init_rate_depth", "reid_memory",         "alternative_depth",
+                          "depth_gate",      "depth_gate_frames"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 21u);
+  EXPECT_EQ(keys.size(), 23u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
@@ -78,6 +80,9 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   EXPECT_NE(errorOf("[Tracking]\nmin_hits = 0\n").find("min_hits"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nratio_walk = 0\n").find("ratio_walk"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nreid_memory = -1\n").find("reid_memory"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 1.5\n").find("depth_gate"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_frames = -1\n").find("depth_gate_frames"),
+            std::string::npos);
   EXPECT_EQ(errorOf("[Tracking]\n"), "");
 }
 

@@ -80,6 +80,15 @@ struct KalmanBoxTrackerParams {
   /// cluster and nobody else's; otherwise a track whose depth once went to the wall or to an
   /// occluder would keep taking that surface through d_alt.
   bool alternative_depth = false;
+  /// Not the method (0 = off): a confirmed track's depth is not updated by a matched depth more
+  /// than this fraction off its prediction (the box still is), for up to depth_gate_frames
+  /// frames in a row; then the measurement counts again, so a track that is itself on a wrong
+  /// surface comes back. A person walks a few cm between frames; a jump of tens of per cent is
+  /// the segmentation taking an occluder's surface for a partly hidden person, and a track
+  /// that followed it (the depth IoU still accepts the box) chose that surface again in
+  /// [Retrack] for as long as the occlusion lasted.
+  double depth_gate = 0.0;
+  int depth_gate_frames = 5;
   /// Weight of the track's descriptor when a matched detection updates it (running average).
   double appearance_memory = 0.8;
   BoxNoiseParams noise;
@@ -128,7 +137,13 @@ class KalmanBoxTracker {
     core::Track track;  // id, state, category, model, detection, hits, misses
     KalmanBoxFilter filter;
     cv::Mat appearance = {};  // running average of the matched detections' descriptors
+    int depth_gated = 0;      // frames in a row the depth gate held the depth (depth_gate)
   };
+
+  /// The measurement of a matched observation: box and the depth `depth` (<= 0: none), or,
+  /// when depth_gate holds it, the box with the track's own depth as unknown.
+  BoxMeasurement measurementFor(Tracked& tr, const cv::Rect2f& box, double depth,
+                                BoxMeasurementCovariance& R) const;
 
   /// The depth of `o` that `tr` is compared with and updated by: o.depth, or with
   /// alternative_depth the one of o.depth and o.depth_alt nearer (in ratio) the track's depth.
