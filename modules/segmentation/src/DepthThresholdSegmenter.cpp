@@ -197,6 +197,49 @@ bool objectAtExpected(const cv::Mat& depth, const cv::Rect& roi, int m, double e
   return true;
 }
 
+// retry_taken_surface: a mask keeping less than this share of its pixels after the overlap step,
+// with another overlapping mask's d_t within kSameSurface of its own, lost its surface to it.
+constexpr double kTakenFraction = 0.2;
+constexpr double kSameSurface = 0.9;
+
+// Did mask i (`before` pixels before the overlap step) lose its surface to another mask? When
+// the step left it empty, or under kTakenFraction of its pixels with another overlapping mask
+// on the same surface.
+bool takenSurface(const std::vector<core::ObjectMask>& masks, size_t i, int before) {
+  const int now = cv::countNonZero(masks[i].mask);
+  if (now == 0) return true;
+  if (now >= kTakenFraction * before) return false;
+  for (size_t j = 0; j < masks.size(); ++j)
+    if (j != i && masks[j].valid && (masks[j].roi & masks[i].roi).area() > 0 &&
+        core::depthRatio(masks[j].d_t, masks[i].d_t) >= kSameSurface)
+      return true;
+  return false;
+}
+
+// The clusters of an object hidden behind another's `surface`: m grid points over its whole box
+// `roi` more than e / 2 behind the surface and not beyond `maxDepth` (max_height_person), of
+// whose 2-means the nearer cluster when more than e apart (the object before the wall), else
+// their mean, is the object (far cluster) and the surface its occluder (near cluster). False
+// with fewer than 4 such points.
+bool clustersBehind(const cv::Mat& depth, const cv::Rect& roi, double surface, double e, int m,
+                    double maxDepth, TwoMeansResult& out) {
+  std::vector<float> behind;
+  forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point, float z) {
+    if (z > surface + e / 2 && z <= maxDepth) behind.push_back(z);
+  });
+  if (behind.size() < 4) return false;
+  const TwoMeansResult rest = twoMeans(behind);
+  out.two_clusters = true;
+  out.near_mean = surface;
+  out.near_count = 0;
+  out.far_count = int(behind.size());
+  out.far_mean = rest.two_clusters && rest.far_mean - rest.near_mean > e
+                     ? rest.near_mean
+                     : (rest.near_mean * rest.near_count + rest.far_mean * rest.far_count) /
+                           double(behind.size());
+  return true;
+}
+
 }  // namespace
 
 bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::Rect& roi,
@@ -342,19 +385,30 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     chosen[i] = c;
     chosenNear[i] = nearIsObject;
   }
+  std::vector<int> cut(n, 0);  // each mask's pixels before the overlap step
+  if (params_.retry_taken_surface)
+    for (size_t i = 0; i < n; ++i)
+      if (masks[i].valid && !masks[i].mask.empty()) cut[i] = cv::countNonZero(masks[i].mask);
   resolveOverlaps(masks, depth);
   if (!params_.retry_taken_surface) return masks;
-  // A mask the overlap step left empty was cut on another object's surface, which holds all of
-  // its pixels: two detections cannot be one surface, so its other cluster is cut instead
-  // (when more than e away), and the overlaps are resolved again.
+  // A mask whose surface the overlap step gave to another object was cut on that object's
+  // surface: two detections are not one surface, so it is cut again on what its box shows
+  // behind that surface, and the overlaps are resolved again.
   bool retried = false;
   for (size_t i = 0; i < n; ++i) {
+    if (!masks[i].valid || !takenSurface(masks, i, cut[i])) continue;
     const TwoMeansResult& c = chosen[i];
-    if (!masks[i].valid || cv::countNonZero(masks[i].mask) > 0 || !c.two_clusters ||
-        c.far_mean - c.near_mean <= marginFor(detections[i]))
-      continue;
-    masks[i] = segmentWith(depth, detections[i], int(i), c, !chosenNear[i], maxDepth[i]);
-    retried = true;
+    const double e = marginFor(detections[i]);
+    const double surface = chosenNear[i] ? c.near_mean : c.far_mean;
+    TwoMeansResult behind;
+    if (clustersBehind(depth, rois[i], surface, e, params_.m, maxDepth[i], behind)) {
+      masks[i] = segmentWith(depth, detections[i], int(i), behind, false, maxDepth[i]);
+      retried = true;
+    } else if (cv::countNonZero(masks[i].mask) == 0 && c.two_clusters &&
+               c.far_mean - c.near_mean > e) {  // nothing behind: the other cluster
+      masks[i] = segmentWith(depth, detections[i], int(i), c, !chosenNear[i], maxDepth[i]);
+      retried = true;
+    }
   }
   if (retried) resolveOverlaps(masks, depth);
   return masks;

@@ -71,8 +71,8 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       "track's depth, the samples within this fraction of it are the object (not the method)");
   core::writeKey(
       c, s, "retry_taken_surface", p.retry_taken_surface,
-      "with occluder_aware: a mask the overlap step leaves empty (another object's surface) "
-      "is cut again on its other cluster (not the method)");
+      "with occluder_aware: a mask whose surface the overlap step gives to another object is "
+      "cut again on what its box shows behind that surface (not the method)");
   core::writeKey(
       c, s, "object_cluster", std::string(core::wordOf(p.object_cluster, kClusters)),
       "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "

@@ -89,28 +89,64 @@ TEST(OccluderAwareCluster, AnExpectedDepthFarFromBothClustersFindsItsOwnSurface)
       << "nothing within 10 % of 3.3 m: the candidate box's own (only) cluster";
 }
 
-TEST(OccluderAwareCluster, AMaskTheOverlapStepLeavesEmptyIsCutOnItsOtherCluster) {
-  // retry_taken_surface (not the method): B, whose own surface (2.4 m) shows beside A (1.2 m),
-  // is cut on A's surface (here because its expected depth says so; in the pipeline, a cluster
-  // choice gone wrong), and the overlap step gives all of those pixels to A.
-  const cv::Rect a(100, 20, 60, 200), b(130, 20, 60, 200);
+namespace {
+
+/// A's surface (1.2 m) over A's box and B's own (2.4 m) where B shows, before a wall at 5 m;
+/// A and B segmented with occluder_aware and the connected overlap rule, without and with
+/// retry_taken_surface.
+struct TakenSurface {
+  std::vector<core::ObjectMask> without, with;
+};
+TakenSurface segmentTakenSurface(const cv::Rect& a, const cv::Rect& b, const cv::Rect& bShows,
+                                 const std::vector<double>& expected, double fy, double maxHeight) {
   cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(5.0f));
   depth(a).setTo(1.2f);
-  depth(cv::Rect(160, 20, 30, 200)).setTo(2.4f);
+  depth(bShows).setTo(2.4f);
   DepthThresholdParams p;
   p.object_cluster = ObjectCluster::OccluderAware;
   p.overlap_rule = segmentation::OverlapRule::Connected;
-  const auto taken = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, {0, 1.2});
-  ASSERT_EQ(taken.size(), 2u);
-  EXPECT_EQ(cv::countNonZero(taken[1].mask), 0);
-  EXPECT_NEAR(taken[1].d_t, 1.2, 1e-5) << "A's surface";
+  p.max_height_person = maxHeight;
+  TakenSurface out;
+  out.without = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, expected, fy);
   p.retry_taken_surface = true;
-  const auto retried = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, {0, 1.2});
-  ASSERT_EQ(retried.size(), 2u);
-  EXPECT_NEAR(retried[1].d_t, 2.4, 1e-5);
-  EXPECT_NEAR(retried[1].d_o, 1.2, 1e-5) << "A in front";
-  EXPECT_EQ(cv::countNonZero(retried[1].mask), 30 * 200) << "B's own surface";
-  EXPECT_EQ(cv::countNonZero(retried[0].mask), 60 * 200) << "A keeps its own";
+  out.with = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, expected, fy);
+  return out;
+}
+
+}  // namespace
+
+TEST(OccluderAwareCluster, AMaskWhoseSurfaceAnotherTookIsCutOnWhatLiesBehindIt) {
+  // retry_taken_surface (not the method): B, whose own surface (2.4 m) shows beside A (1.2 m),
+  // is cut on A's surface (here because its expected depth says so; in the pipeline, a cluster
+  // choice gone wrong), and the overlap step gives all of those pixels to A: it is cut again on
+  // what its box shows more than e / 2 behind A's surface.
+  const auto r = segmentTakenSurface({100, 20, 60, 200}, {130, 20, 60, 200}, {160, 20, 30, 200},
+                                     {0, 1.2}, 0, 0);
+  ASSERT_EQ(r.without.size(), 2u);
+  EXPECT_EQ(cv::countNonZero(r.without[1].mask), 0);
+  EXPECT_NEAR(r.without[1].d_t, 1.2, 1e-5) << "A's surface";
+  ASSERT_EQ(r.with.size(), 2u);
+  EXPECT_NEAR(r.with[1].d_t, 2.4, 1e-5);
+  EXPECT_NEAR(r.with[1].d_o, 1.2, 1e-5) << "A in front";
+  EXPECT_EQ(cv::countNonZero(r.with[1].mask), 30 * 200) << "B's own surface";
+  EXPECT_EQ(cv::countNonZero(r.with[0].mask), 60 * 200) << "A keeps its own";
+}
+
+TEST(OccluderAwareCluster, AHiddenPersonsHeadAboveItsOccluderIsFoundBehindItsSurface) {
+  // Only the head of B (2.4 m) shows, above A (1.2 m), which fills B's candidate box: B's
+  // 2-means sees A's surface alone, the overlap step gives it to A, and B is cut again on the
+  // points of its whole box behind A's surface and nearer than a 2.2 m person could fill its
+  // 220 px box at fy = 300 px (3 m): the head, not the wall (5 m).
+  const auto r =
+      segmentTakenSurface({90, 60, 100, 180}, {110, 20, 60, 220}, {125, 20, 30, 40}, {}, 300, 2.2);
+  ASSERT_EQ(r.without.size(), 2u);
+  EXPECT_NEAR(r.without[1].d_t, 1.2, 1e-5) << "A's surface";
+  EXPECT_EQ(cv::countNonZero(r.without[1].mask), 0);
+  ASSERT_EQ(r.with.size(), 2u);
+  EXPECT_NEAR(r.with[1].d_t, 2.4, 1e-5);
+  EXPECT_NEAR(r.with[1].d_o, 1.2, 1e-5);
+  EXPECT_EQ(cv::countNonZero(r.with[1].mask), 30 * 40) << "the head";
+  EXPECT_NEAR(r.with[0].d_t, 1.2, 1e-5) << "A unchanged";
 }
 
 TEST(OccluderAwareCluster, APersonStandingInFrontIsStillTheOccluder) {

@@ -84,10 +84,14 @@ struct DepthThresholdParams {
   /// depth between an occluder and the wall, or behind two occluders, that 2-means merged into
   /// another cluster. 0 = off (the nearer cluster in ratio, whatever its distance).
   double expected_depth_band = 0;
-  /// NOT the method; with object_cluster = occluder_aware. A mask the overlap step (step 9)
-  /// leaves empty was cut on another object's surface, which holds all its pixels (a partly
-  /// hidden person given its occluder's depth); two detections are not one surface, so it is
-  /// cut again on its other cluster, when that is more than e away, and step 9 runs again.
+  /// NOT the method; with object_cluster = occluder_aware. A mask that the overlap step (step 9)
+  /// leaves empty, or with under a fifth of its pixels while another overlapping mask's d_t is
+  /// within 10 % of its own, was cut on another object's surface (a partly hidden person given
+  /// its occluder's depth); two detections are not one surface, so it is cut again on what its
+  /// whole box shows more than e / 2 behind that surface and not beyond max_height_person's
+  /// depth (2-means: the nearer cluster when more than e apart, else all), that surface being
+  /// its occluder; with fewer than 4 such grid points an empty mask takes its other cluster
+  /// (when more than e away). Step 9 then runs again.
   bool retry_taken_surface = false;
   ObjectCluster object_cluster = ObjectCluster::Far;
   OverlapRule overlap_rule = OverlapRule::Nearer;
