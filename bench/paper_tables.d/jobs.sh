@@ -122,7 +122,7 @@ segmentation() {
   # shellcheck disable=SC2046
   "$BIN/bench-segmentation" --config "$ROOT/params/sim/$sc.ini" --every 3 $(simSettings "$seed" "$sc") \
     --seg-set Segmentation.object_cluster=occluder_aware --seg-set Segmentation.overlap_rule=connected \
-    --seg-set Segmentation.object_depth=mask_median \
+    --seg-set Segmentation.object_depth=mask_median --seg-set Segmentation.max_height_person=2.2 \
     > "$f" 2>&1 || echo "FAILED" >> "$f"
 }
 
