@@ -116,6 +116,18 @@ bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& 
   return outside > 0 && onSurface >= 0.3 * outside;
 }
 
+// Two 2-means clusters more than e apart are two surfaces (an object and what lies behind or
+// before it), not the spread of one.
+bool twoSurfaces(const TwoMeansResult& c, double e) {
+  return c.two_clusters && c.far_mean - c.near_mean > e;
+}
+
+// The mean of all the values a 2-means split.
+double meanOfAll(const TwoMeansResult& c) {
+  return (c.near_mean * c.near_count + c.far_mean * c.far_count) /
+         double(c.near_count + c.far_count);
+}
+
 // Below this share of a candidate box's samples, the far cluster behind an occluder is stray
 // background between the occluder's limbs rather than the object: the occluder hides the whole
 // centre of the box, and the object shows only beside it (behindOccluder).
@@ -143,12 +155,11 @@ TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi, const c
   if (!beside) behind.assign(sorted.end() - c.far_count, sorted.end());
   const TwoMeansResult rest = twoMeans(behind);
   TwoMeansResult out = c;
-  if (rest.two_clusters && rest.far_mean - rest.near_mean > e) {
+  if (twoSurfaces(rest, e)) {
     out.far_mean = rest.near_mean;
     out.far_count = rest.near_count;
   } else if (beside) {
-    out.far_mean =
-        (rest.near_mean * rest.near_count + rest.far_mean * rest.far_count) / double(behind.size());
+    out.far_mean = meanOfAll(rest);
     out.far_count = int(behind.size());
   }
   return out;
@@ -233,10 +244,7 @@ bool clustersBehind(const cv::Mat& depth, const cv::Rect& roi, double surface, d
   out.near_mean = surface;
   out.near_count = 0;
   out.far_count = int(behind.size());
-  out.far_mean = rest.two_clusters && rest.far_mean - rest.near_mean > e
-                     ? rest.near_mean
-                     : (rest.near_mean * rest.near_count + rest.far_mean * rest.far_count) /
-                           double(behind.size());
+  out.far_mean = twoSurfaces(rest, e) ? rest.near_mean : meanOfAll(rest);
   return true;
 }
 
@@ -282,8 +290,7 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
   if (params_.object_cluster == ObjectCluster::Larger)
     nearIsObject = clusters.near_count > clusters.far_count;
   else if (params_.object_cluster == ObjectCluster::OccluderAware)  // no other box: no occluder
-    nearIsObject = clusters.two_clusters &&
-                   clusters.far_mean - clusters.near_mean > marginFor(detection);
+    nearIsObject = twoSurfaces(clusters, marginFor(detection));
   nearIsObject = nearIsExpected(clusters, expectedDepth, nearIsObject);
   objectAtExpected(depth, out.roi, params_.m, expectedDepth, params_.expected_depth_band, clusters,
                    nearIsObject);
@@ -363,7 +370,7 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     }
     TwoMeansResult c = clusters[i];
     const double e = marginFor(detections[i]);
-    bool nearIsObject = c.two_clusters && c.far_mean - c.near_mean > e;
+    bool nearIsObject = twoSurfaces(c, e);
     // Is the near surface another detection standing in front?
     const cv::Rect2d candidate = candidateBox(rois[i]);
     for (size_t j = 0; j < n && nearIsObject; ++j) {
@@ -404,8 +411,8 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     if (clustersBehind(depth, rois[i], surface, e, params_.m, maxDepth[i], behind)) {
       masks[i] = segmentWith(depth, detections[i], int(i), behind, false, maxDepth[i]);
       retried = true;
-    } else if (cv::countNonZero(masks[i].mask) == 0 && c.two_clusters &&
-               c.far_mean - c.near_mean > e) {  // nothing behind: the other cluster
+    } else if (cv::countNonZero(masks[i].mask) == 0 && twoSurfaces(c, e)) {
+      // nothing behind: the other cluster
       masks[i] = segmentWith(depth, detections[i], int(i), c, !chosenNear[i], maxDepth[i]);
       retried = true;
     }
