@@ -277,10 +277,10 @@ void benchSimulation(const BenchSettings& s) {
       percentile(run.selfRho, 0.5), percentile(run.selfRho, 0.1), percentile(run.selfRho, 0.01),
       100 * below / std::max<size_t>(1, run.selfRho.size()));
   std::printf(
-      "tracker         rho_min %.2f (coasting tracks: %.2f), max_age %d, min_hits %d; "
-      "reported: confirmed tracks coasting <= %d frames\n",
+      "tracker         rho_min %.2f (coasting tracks: %.2f), max_age %d, min_hits %d, "
+      "innovation_gate %.1f, depth_gate %.2f; reported: confirmed tracks coasting <= %d frames\n",
       params.rho_min, std::min(params.rho_min, params.rho_min_coasting), params.max_age,
-      params.min_hits, s.report_coasting);
+      params.min_hits, params.innovation_gate, params.depth_gate, s.report_coasting);
   std::printf("ground truth    %zu boxes counted, %zu truth ids; %zu tracks started\n",
               m.truth_boxes, m.truth_ids, size_t(main.tracks_started));
   std::printf("MOTA            %.3f (target >= 0.90; ratio %.2f)  [FN %zu, FP %zu, IDsw %zu]\n",

@@ -36,6 +36,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
+  TRACKING_READ(double, t.innovation_gate, "innovation_gate");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -72,10 +73,13 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "one is another detection's surface, or the other is nearer and nobody's "
                  "(not the method)");
   TRACKING_WRITE(t.depth_gate, "depth_gate",
-                 "0 = off; a confirmed track ignores a matched depth this fraction off its "
-                 "prediction (the box still counts; not the method)");
+                 "0 = off; a confirmed track ignores a matched depth this fraction off the "
+                 "last depth it took (the box still counts; not the method)");
   TRACKING_WRITE(t.depth_gate_frames, "depth_gate_frames",
                  "frames in a row depth_gate may hold a track's depth");
+  TRACKING_WRITE(t.innovation_gate, "innovation_gate",
+                 "0 = off; refuse a pair whose box centre's squared Mahalanobis distance from "
+                 "the prediction exceeds this (chi-square, 2 dof; not the method)");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");
@@ -120,6 +124,10 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
     if (!(value >= 0 && value <= 1))
       throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +
                               cfg.source() + ": must be in [0, 1]");
+  if (!(t.innovation_gate >= 0))
+    throw core::ConfigError("[" + section +
+                            "] innovation_gate = " + std::to_string(t.innovation_gate) + " in " +
+                            cfg.source() + ": must be >= 0 (0: off)");
   const std::pair<double, const char*> positive[] = {{t.reid_max_shift, "reid_max_shift"},
                                                      {n.meas_center_px, "meas_center_px"},
                                                      {n.meas_area_rel, "meas_area_rel"},

@@ -284,3 +284,52 @@ TEST(TrackingKalmanBoxTracker, DepthGateHoldsAConfirmedTracksDepthForAFewFrames)
     }
   }
 }
+
+TEST(TrackingKalmanBoxTracker, DepthGateFollowsAPersonWhoTurnsRound) {
+  // A person walks towards the camera at 0.04 m a frame, then turns and walks away: the depth
+  // rate reverses. The gate compares a measured depth with the last one the track took, not
+  // with the prediction (which runs on with the old rate and soon differs by more than 15 %),
+  // so the track follows every frame (within the filter's own lag at the turn; held against
+  // the prediction it fell 18 % behind at frame 16).
+  KalmanBoxTrackerParams params;
+  params.min_hits = 1;
+  params.rho_min = 0.5;
+  params.depth_gate = 0.15;
+  params.depth_gate_frames = 5;
+  KalmanBoxTracker tracker(params);
+  const auto depthAt = [](int k) { return k < 15 ? 1.2 - 0.04 * k : 0.64 + 0.04 * (k - 15); };
+  for (int k = 0; k < 30; ++k) {
+    const auto tracks = step(tracker, k, {person(200, 100, 120, 300, depthAt(k))});
+    const core::Track* t = findId(tracks, 1);
+    ASSERT_NE(t, nullptr) << "frame " << k;
+    EXPECT_EQ(t->detection, 0) << "frame " << k;
+    EXPECT_NEAR(t->depth, depthAt(k), 0.1 * depthAt(k)) << "frame " << k;
+  }
+}
+
+TEST(TrackingKalmanBoxTracker, InnovationGateKeepsATrackOffAPersonSteppingOutAgainstItsWay) {
+  // A person walks right at 4 px a frame; at frame 20 they vanish behind something just as
+  // another person at the same depth steps out 35 px to the left of where they were heading.
+  // The depth IoU of that box with the prediction is 0.55 > rho_min, so without the gate the
+  // track takes the newcomer; the centre is 35 px against the way it walked, far outside the
+  // filter's position uncertainty, so with the gate the track coasts and the newcomer gets a
+  // track of its own.
+  for (const double gate : {0.0, 25.0}) {
+    KalmanBoxTrackerParams params;
+    params.min_hits = 1;
+    params.rho_min = 0.5;
+    params.innovation_gate = gate;
+    KalmanBoxTracker tracker(params);
+    for (int k = 0; k < 20; ++k) step(tracker, k, {person(100 + 4 * k, 100, 120, 300, 2.0)});
+    const auto tracks = step(tracker, 20, {person(100 + 4 * 20 - 35, 100, 120, 300, 2.0)});
+    const core::Track* walker = findId(tracks, 1);
+    ASSERT_NE(walker, nullptr) << "gate " << gate;
+    if (gate > 0) {
+      EXPECT_EQ(walker->detection, -1) << "coasting";
+      EXPECT_EQ(tracker.tracksStarted(), 2);
+    } else {
+      EXPECT_EQ(walker->detection, 0) << "what the gate is for";
+      EXPECT_EQ(tracker.tracksStarted(), 1);
+    }
+  }
+}

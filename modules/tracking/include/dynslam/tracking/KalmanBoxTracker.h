@@ -81,14 +81,23 @@ struct KalmanBoxTrackerParams {
   /// occluder would keep taking that surface through d_alt.
   bool alternative_depth = false;
   /// Not the method (0 = off): a confirmed track's depth is not updated by a matched depth more
-  /// than this fraction off its prediction (the box still is), for up to depth_gate_frames
-  /// frames in a row; then the measurement counts again, so a track that is itself on a wrong
-  /// surface comes back. A person walks a few cm between frames; a jump of tens of per cent is
-  /// the segmentation taking an occluder's surface for a partly hidden person, and a track
-  /// that followed it (the depth IoU still accepts the box) chose that surface again in
+  /// than this fraction off the last depth it took (the box still is), for up to
+  /// depth_gate_frames frames in a row; then the measurement counts again, so a track that is
+  /// itself on a wrong surface comes back. A person walks a few cm between frames; a jump of tens
+  /// of per cent is the segmentation taking an occluder's surface for a partly hidden person, and a
+  /// track that followed it (the depth IoU still accepts the box) chose that surface again in
   /// [Retrack] for as long as the occlusion lasted.
   double depth_gate = 0.0;
   int depth_gate_frames = 5;
+  /// Not the method (0 = off): a (track, detection) pair is also refused when the squared
+  /// Mahalanobis distance of the detection's box centre from the track's predicted one (the
+  /// filter's position covariance plus meas_center_px^2) exceeds this (chi-square, 2 degrees of
+  /// freedom: 9.2 is the 99 % quantile). The depth IoU of two boxes that overlap by half says
+  /// nothing of where the track was heading: when the person a track follows disappears behind
+  /// another just as a third steps out beside it, the track took the third one (40 px against
+  /// the way it walked, at IoU 0.6) and the two identities swapped for good. The covariance grows
+  /// while a track coasts, so the gate widens with the time hidden.
+  double innovation_gate = 0.0;
   /// Weight of the track's descriptor when a matched detection updates it (running average).
   double appearance_memory = 0.8;
   BoxNoiseParams noise;
@@ -138,6 +147,7 @@ class KalmanBoxTracker {
     KalmanBoxFilter filter;
     cv::Mat appearance = {};  // running average of the matched detections' descriptors
     int depth_gated = 0;      // frames in a row the depth gate held the depth (depth_gate)
+    double last_depth = 0;    // m; the last measured depth the track took (depth_gate)
   };
 
   /// The measurement of a matched observation: box and the depth `depth` (<= 0: none), or,
@@ -155,6 +165,10 @@ class KalmanBoxTracker {
   void associate(const std::vector<BoxObservation>& observations, const cv::Size& image,
                  double threshold, bool coastingOnly, std::vector<int>& observationOf,
                  std::vector<char>& observationUsed) const;
+  /// innovation_gate: the squared Mahalanobis distance of `box`'s centre from `predicted`'s
+  /// (the track's predicted box, clipped as the detection is).
+  double centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
+                           const cv::Rect2f& box) const;
   void startTrack(const BoxObservation& observation, int index);
   /// reid_max_distance > 0: the appearance round for coasting tracks (see there).
   void reidentify(const std::vector<BoxObservation>& observations, std::vector<int>& observationOf,
