@@ -10,6 +10,8 @@
 // [Segmentation], then [Tracking] (every frame), then [Retrack] (boxes = tracked_detections:
 // each detection segmented again, its cluster chosen by the depth of the track that took it),
 // as `dynslam` runs them with params/sim_frontend.ini; time is then that of all three stages.
+// --seg-config INI takes INI's [Segmentation] only (each frame alone, as without --pipeline):
+// the first stage of a system ini, without copying its keys into --seg-set.
 // Detections: the people and cars at least --min-visible visible (default: the share below which
 // the system's GroundTruthDetector reports nothing, 0.2, as a real detector misses a person
 // hidden that much); --min-visible 0 gives every object with a visible pixel a box.
@@ -22,6 +24,7 @@
 //   build/bin/bench-segmentation [--config params/sim/A.ini]... [--every 3] [--set s.k=v]...
 //        [--seg-set Segmentation.key=value]... [--boxes amodal|visible] [--min-visible 0.2]
 //        [--dump DIR] [--dump-max 12] [--pipeline params/sim_frontend.ini] [--cases FILE.csv]
+//        [--seg-config params/sim_vio.ini]
 // Without --config: indoor_people_high. An augment scene (params/sim/augmented_7scenes.ini, with
 // --set Augment.rawlog=...) is scored the same way: the inserted movers' boxes and instance
 // labels against the real depth they are composited into (real pixels are label 0).
@@ -345,14 +348,15 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-segmentation", [&] {
-    core::CommandLine cl(
-        {"--every", "--boxes", "--min-visible", "--dump", "--dump-max", "--pipeline", "--cases"},
-        {}, {"--config", "--set", "--seg-set"});
+    core::CommandLine cl({"--every", "--boxes", "--min-visible", "--dump", "--dump-max",
+                          "--pipeline", "--seg-config", "--cases"},
+                         {}, {"--config", "--set", "--seg-set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << "usage: bench-segmentation [--config INI]... [--every N] [--set s.k=v]...\n"
                    "       [--seg-set Segmentation.key=value]... [--boxes amodal|visible]\n"
                    "       [--min-visible F] [--dump DIR] [--dump-max N] [--pipeline INI]\n"
+                   "       [--seg-config INI]\n"
                    "       [--cases FILE.csv]\n";
       return 0;
     }
@@ -360,11 +364,20 @@ int main(int argc, char** argv) {
     if (inis.empty()) inis = {"params/sim/indoor_people_high.ini"};
     // The segmenter's parameters as the pipeline reads them ([Segmentation]; defaults: the
     // method's, or those of the --pipeline ini, which --seg-set then overrides in any section).
+    // --seg-config INI reads [Segmentation] alone from a system ini (each frame still segmented
+    // alone), so a bench of a system's masks needs no copy of its keys.
     std::optional<core::IniConfig> pipeline;
-    if (const auto p = cl.valueOr("--pipeline", ""); !p.empty())
-      pipeline = core::IniConfig::fromFile(p, cl.all("--seg-set"));
-    auto segIni = pipeline ? *pipeline : core::IniConfig::fromText("", "--seg-set");
-    if (!pipeline)
+    const std::string pipelineIni = cl.valueOr("--pipeline", "");
+    const std::string segConfig = cl.valueOr("--seg-config", "");
+    if (!pipelineIni.empty() && !segConfig.empty())
+      throw core::UsageError(
+          "--pipeline and --seg-config: give one (--pipeline reads [Segmentation] too)");
+    if (!pipelineIni.empty())
+      pipeline = core::IniConfig::fromFile(pipelineIni, cl.all("--seg-set"));
+    auto segIni = pipeline             ? *pipeline
+                  : !segConfig.empty() ? core::IniConfig::fromFile(segConfig, cl.all("--seg-set"))
+                                       : core::IniConfig::fromText("", "--seg-set");
+    if (!pipeline && segConfig.empty())
       for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
     segmentation::SegmentationStage stage;
     stage.configure(segIni, "Segmentation");

@@ -118,12 +118,10 @@ rgbd7() {
 segmentation() {
   local seed="$1" sc="$2" f="$OUT/perception/seg_${2}_seed$1.txt"
   mkdir -p "$OUT/perception"
-  # The segmentation settings of params/sim_vio.ini (what the SLAM tables run).
+  # The [Segmentation] of params/sim_vio.ini (what the SLAM tables run), each frame alone.
   # shellcheck disable=SC2046
   "$BIN/bench-segmentation" --config "$ROOT/params/sim/$sc.ini" --every 3 $(simSettings "$seed" "$sc") \
-    --seg-set Segmentation.object_cluster=occluder_aware --seg-set Segmentation.overlap_rule=connected \
-    --seg-set Segmentation.object_depth=mask_median --seg-set Segmentation.max_height_person=2.2 \
-    > "$f" 2>&1 || echo "FAILED" >> "$f"
+    --seg-config "$ROOT/params/sim_vio.ini" > "$f" 2>&1 || echo "FAILED" >> "$f"
 }
 
 detector() {
