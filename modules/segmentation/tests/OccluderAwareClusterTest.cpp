@@ -132,6 +132,29 @@ TEST(OccluderAwareCluster, AMaskWhoseSurfaceAnotherTookIsCutOnWhatLiesBehindIt) 
   EXPECT_EQ(cv::countNonZero(r.with[0].mask), 60 * 200) << "A keeps its own";
 }
 
+TEST(OccluderAwareCluster, AMaskLeftOnTheFlankOfTheBodyInFrontIsCutBehindIt) {
+  // A's front is at 1.2 m, its flank (a strip of its box) at 1.38 m. B (expected near the
+  // flank) is cut on A's front and flank; the overlap step gives it the flank only, under a
+  // fifth of its pixels, and its d_t (the mask's median, as in params/sim_*.ini) becomes the
+  // flank's: 15 % behind A's, beyond kSameSurface, but nearer than e / 2 to A's front. Counted
+  // as A's body, B is cut again behind it: its own surface at 2.4 m.
+  cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(5.0f));
+  const cv::Rect a(100, 20, 60, 200), b(130, 20, 60, 200);
+  depth(a).setTo(1.2f);
+  depth(cv::Rect(156, 20, 4, 200)).setTo(1.38f);
+  depth(cv::Rect(160, 20, 30, 200)).setTo(2.4f);
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::OccluderAware;
+  p.overlap_rule = segmentation::OverlapRule::Connected;
+  p.object_depth = segmentation::ObjectDepth::MaskMedian;
+  p.retry_taken_surface = true;
+  const auto masks = DepthThresholdSegmenter(p).segment(depth, {person(a), person(b)}, {0, 1.38});
+  ASSERT_EQ(masks.size(), 2u);
+  EXPECT_NEAR(masks[1].d_t, 2.4, 1e-5) << "B behind A";
+  EXPECT_EQ(cv::countNonZero(masks[1].mask), 30 * 200) << "B's own surface";
+  EXPECT_NEAR(masks[0].d_t, 1.2, 0.2) << "A";
+}
+
 TEST(OccluderAwareCluster, AHiddenPersonsHeadAboveItsOccluderIsFoundBehindItsSurface) {
   // Only the head of B (2.4 m) shows, above A (1.2 m), which fills B's candidate box: B's
   // 2-means sees A's surface alone, the overlap step gives it to A, and B is cut again on the

@@ -86,7 +86,8 @@ struct DepthThresholdParams {
   double expected_depth_band = 0;
   /// NOT the method; with object_cluster = occluder_aware. A mask that the overlap step (step 9)
   /// leaves empty, or with under a fifth of its pixels while another overlapping mask's d_t is
-  /// within 10 % of its own, was cut on another object's surface (a partly hidden person given
+  /// within 10 % of its own or nearer by less than e / 2 (its own d_t then lies on the flank of
+  /// the body in front), was cut on another object's surface (a partly hidden person given
   /// its occluder's depth); two detections are not one surface, so it is cut again on what its
   /// whole box shows more than e / 2 behind that surface and not beyond max_height_person's
   /// depth (2-means: the nearer cluster when more than e apart, else all), that surface being
