@@ -366,19 +366,18 @@ int main(int argc, char** argv) {
     // method's, or those of the --pipeline ini, which --seg-set then overrides in any section).
     // --seg-config INI reads [Segmentation] alone from a system ini (each frame still segmented
     // alone), so a bench of a system's masks needs no copy of its keys.
-    std::optional<core::IniConfig> pipeline;
     const std::string pipelineIni = cl.valueOr("--pipeline", "");
     const std::string segConfig = cl.valueOr("--seg-config", "");
     if (!pipelineIni.empty() && !segConfig.empty())
       throw core::UsageError(
           "--pipeline and --seg-config: give one (--pipeline reads [Segmentation] too)");
-    if (!pipelineIni.empty())
-      pipeline = core::IniConfig::fromFile(pipelineIni, cl.all("--seg-set"));
-    auto segIni = pipeline             ? *pipeline
-                  : !segConfig.empty() ? core::IniConfig::fromFile(segConfig, cl.all("--seg-set"))
-                                       : core::IniConfig::fromText("", "--seg-set");
-    if (!pipeline && segConfig.empty())
+    const std::string iniFile = pipelineIni.empty() ? segConfig : pipelineIni;
+    auto segIni = iniFile.empty() ? core::IniConfig::fromText("", "--seg-set")
+                                  : core::IniConfig::fromFile(iniFile, cl.all("--seg-set"));
+    if (iniFile.empty())
       for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
+    std::optional<core::IniConfig> pipeline;
+    if (!pipelineIni.empty()) pipeline = segIni;
     segmentation::SegmentationStage stage;
     stage.configure(segIni, "Segmentation");
     const segmentation::DepthThresholdSegmenter segmenter(stage.options().params);

@@ -145,10 +145,9 @@ BoxMeasurement KalmanBoxTracker::measurementFor(Tracked& tr, const cv::Rect2f& b
 
 double KalmanBoxTracker::centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
                                            const cv::Rect2f& box) const {
-  const auto centre = [](const cv::Rect2f& b) {
-    return Eigen::Vector2d(b.x + 0.5 * b.width, b.y + 0.5 * b.height);
-  };
-  const Eigen::Vector2d y = centre(box) - centre(predicted);
+  // The centres (u, v) as the filter measures them.
+  const Eigen::Vector2d y =
+      boxMeasurement(box, 0).head<2>() - boxMeasurement(predicted, 0).head<2>();
   const double r = params_.noise.meas_center_px;
   const Eigen::Matrix2d S =
       tr.filter.covariance().block<2, 2>(kU, kU) + r * r * Eigen::Matrix2d::Identity();
