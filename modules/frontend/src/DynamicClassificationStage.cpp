@@ -23,6 +23,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
   p.still_feature_in_still_box =
       core::readBool(c, s, "still_feature_in_still_box", p.still_feature_in_still_box);
+  p.unmeasured_feature_by_depth =
+      core::readBool(c, s, "unmeasured_feature_by_depth", p.unmeasured_feature_by_depth);
   p.moving_feature_speed = c.read_double(s, "moving_feature_speed", p.moving_feature_speed);
   p.moving_feature_max_speed =
       c.read_double(s, "moving_feature_max_speed", p.moving_feature_max_speed);
@@ -64,6 +66,10 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
   core::writeKey(c, s, "still_feature_in_still_box", p.still_feature_in_still_box,
                  "true: ... and so does one that was not static, inside the box of another "
                  "object judged not to move (not the method)");
+  core::writeKey(c, s, "unmeasured_feature_by_depth", p.unmeasured_feature_by_depth,
+                 "true: a feature with no scene flow yet in a moving object's mask is static "
+                 "inside the box of an object judged not to move whose depth is nearer its own "
+                 "(not the method)");
   core::writeKey(c, s, "moving_feature_speed", p.moving_feature_speed,
                  "m/s; a feature faster than this in a still object's mask is non-rigid (0: off)");
   core::writeKey(c, s, "moving_feature_max_speed", p.moving_feature_max_speed,

@@ -68,11 +68,13 @@ std::deque<Entry> withLatest(std::unordered_map<std::int64_t, std::deque<Entry>>
 /// Whether `pixel` lies in the box of an object other than `own` not judged to move: by its
 /// latest decision (`dynamic`: this frame's, or the last one of an object whose features all
 /// went to other masks), or for want of one (no scene flow says it moves, as for a new track).
+/// With `z` > 0, only an object whose d_t is nearer `z` than `ownDepth` counts.
 bool inStillObjectsBox(const std::vector<ObjectRegion>& regions, const std::map<int, bool>& dynamic,
-                       int own, const cv::Point2f& pixel) {
+                       int own, const cv::Point2f& pixel, double z = 0, double ownDepth = 0) {
   const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
   for (const auto& r : regions) {
     if (r.object_id == own || !r.roi.contains(px)) continue;
+    if (z > 0 && !(r.depth > 0 && std::abs(z - r.depth) < std::abs(z - ownDepth))) continue;
     const auto d = dynamic.find(r.object_id);
     if (d == dynamic.end() || !d->second) return true;
   }
@@ -220,8 +222,9 @@ void DynamicClassifier::process(core::Frame& frame) {
       if (last != objectOf_.end() && !contradicted) {
         const auto t = tracks.find(last->second);
         if (t != tracks.end())
-          c.region = &maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model})
-                          .first->second;
+          c.region =
+              &maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model, {}, {}, 0.0})
+                   .first->second;
       }
     }
     f.object_id = c.region ? c.region->object_id : -1;
@@ -390,7 +393,12 @@ void DynamicClassifier::process(core::Frame& frame) {
       f.feature_class = core::FeatureClass::NonRigid;
       continue;
     }
-    if (!region || !dynamic[region->object_id] || stillAndWasStatic) {
+    // unmeasured_feature_by_depth: no flow yet (a new corner), so the depth says whose it is.
+    const bool unmeasuredOfStill = params_.unmeasured_feature_by_depth && region &&
+                                   cur[i].has_point && cur[i].speed < 0 &&
+                                   inStillObjectsBox(regions, lastDynamic_, region->object_id,
+                                                     f.pixel, cur[i].P.z(), region->depth);
+    if (!region || !dynamic[region->object_id] || stillAndWasStatic || unmeasuredOfStill) {
       nextStatic.insert(f.id);
       continue;  // Static
     }

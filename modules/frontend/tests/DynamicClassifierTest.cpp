@@ -412,6 +412,65 @@ TEST(DynamicClassifier, StillFeaturesInAStillObjectsBoxAreStaticThoughNeverStati
   EXPECT_EQ(inBox.first, inBox.second) << "still, in a still object's box: Static";
 }
 
+// The frame the standing person's features reappear as new tracks (ids + 3000) inside the
+// walker's mask (its left half, as above) they have no scene flow yet, so the still rules cannot
+// speak for them and they took the walker's class. With unmeasured_feature_by_depth their depth,
+// nearer the standing person's d_t than the walker's, makes them Static; a new corner there at
+// the walker's own depth stays the walker's.
+TEST(DynamicClassifier, NewFeaturesInAStillObjectsBoxGoByDepth) {
+  auto run = [](bool byDepth) {
+    DynamicClassifierParams params;
+    params.still_feature_speed = 0.2;
+    params.still_feature_in_still_box = true;
+    params.unmeasured_feature_by_depth = byDepth;
+    const Scene scene;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    for (int k = 0; k <= 12; ++k) {
+      f = scene.frame(k);
+      if (k == 12) {
+        auto& m = f.object_masks;
+        cv::Rect half = m[1].roi;
+        half.width /= 2;
+        const cv::Rect roi = m[0].roi | half;
+        cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
+        mask(m[0].roi - roi.tl()).setTo(255);
+        mask(half - roi.tl()).setTo(255);
+        m[0].roi = roi;
+        m[0].mask = mask;
+        for (auto& feat : f.features)
+          if (feat.id >= 2000 && feat.id < 3000) feat.id += 3000;
+        core::Feature walkerCorner;  // a new corner on the walker, in the standing one's box
+        walkerCorner.id = 9000;
+        walkerCorner.pixel = cv::Point2f(half.x + 2.f, half.y + half.height / 2.f);
+        walkerCorner.depth = float(m[0].d_t);
+        f.features.push_back(walkerCorner);
+      }
+      classifier.process(f);
+    }
+    int onWalker = 0, staticOnWalker = 0, walkerDynamic = 0, cornerStatic = -1;
+    for (const auto& feat : f.features) {
+      if (feat.id >= 5000 && feat.id < 6000 && feat.object_id == 1) {
+        ++onWalker;
+        staticOnWalker += feat.feature_class == core::FeatureClass::Static;
+      }
+      if (feat.id >= 1000 && feat.id < 2000)
+        walkerDynamic += feat.feature_class != core::FeatureClass::Static;
+      if (feat.id == 9000) {
+        EXPECT_EQ(feat.object_id, 1) << "the walker's mask holds the corner";
+        cornerStatic = feat.feature_class == core::FeatureClass::Static;
+      }
+    }
+    EXPECT_GE(onWalker, 5) << "the walker's mask holds some of them";
+    EXPECT_EQ(walkerDynamic, 25) << "the walker's own features stay dynamic";
+    EXPECT_EQ(cornerStatic, 0) << "at the walker's depth: the walker's class";
+    return std::make_pair(staticOnWalker, onWalker);
+  };
+  EXPECT_EQ(run(false).first, 0) << "no flow yet: the walker's class";
+  const auto byDepth = run(true);
+  EXPECT_EQ(byDepth.first, byDepth.second) << "nearer the standing person's depth: Static";
+}
+
 // The converse: the standing person's mask grows over the walker (a walker less than e behind a
 // standing person, whose own detection is missed). By the object's class the walker's features
 // there turn Static; with moving_feature_speed they are NonRigid, as they move, while the
