@@ -95,7 +95,7 @@ std::vector<core::ObjectMask> masksFromLabels(const cv::Mat& labels) {
 
 struct Figures {
   size_t frames = 0, features = 0, gyro_frames = 0;
-  size_t incoming = 0, lost_klt = 0, lost_fb = 0, lost_ransac = 0;
+  size_t incoming = 0, lost_klt = 0, lost_fb = 0, lost_residual = 0, lost_ransac = 0;
   std::vector<double> ms, cpu_ms, ms_pyramid, ms_klt, ms_ransac, ms_detect;
   std::vector<double> cells_computed;
   std::vector<double> completed_lengths;  // frames each track lasted
@@ -155,6 +155,7 @@ Figures run(const std::string& rawlog, const frontend::FeatureTrackerParams& par
     fig.incoming += size_t(s.incoming);
     fig.lost_klt += size_t(s.lost_klt);
     fig.lost_fb += size_t(s.lost_fb);
+    fig.lost_residual += size_t(s.lost_residual);
     fig.lost_ransac += size_t(s.lost_ransac);
     std::map<int64_t, core::Feature> current;
     for (const auto& f : features) {
@@ -209,9 +210,11 @@ void print(const std::string& what, const Figures& f) {
       "spacing+corners %.2f ms (%.0f of the grid's cells computed)\n",
       median(f.ms_pyramid), median(f.ms_klt), median(f.ms_ransac), median(f.ms_detect),
       median(f.cells_computed));
-  std::printf("  lost per frame: KLT %.1f %%, forward-backward %.1f %%, F-RANSAC %.1f %%\n",
-              100.0 * double(f.lost_klt) / perFrame, 100.0 * double(f.lost_fb) / perFrame,
-              100.0 * double(f.lost_ransac) / perFrame);
+  std::printf(
+      "  lost per frame: KLT %.1f %%, forward-backward %.1f %%, KLT residual %.1f %%, F-RANSAC "
+      "%.1f %%\n",
+      100.0 * double(f.lost_klt) / perFrame, 100.0 * double(f.lost_fb) / perFrame,
+      100.0 * double(f.lost_residual) / perFrame, 100.0 * double(f.lost_ransac) / perFrame);
   std::printf(
       "  mean track length %.2f frames (%zu tracks, each counted once at its end); mean age of "
       "a frame's features %.2f frames\n",

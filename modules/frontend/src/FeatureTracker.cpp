@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -44,6 +45,10 @@ void validate(const FeatureTrackerParams& p) {
   require(p.klt_max_iterations >= 1, "klt_max_iterations", p.klt_max_iterations, ">= 1");
   require(p.klt_epsilon > 0, "klt_epsilon", p.klt_epsilon, "> 0");
   require(p.max_fb_error_px > 0, "max_fb_error_px", p.max_fb_error_px, "> 0");
+  require(p.max_klt_residual_ratio == 0 || p.max_klt_residual_ratio >= 1, "max_klt_residual_ratio",
+          p.max_klt_residual_ratio, "0 (off) or >= 1");
+  require(p.residual_gate_margin_px >= 0, "residual_gate_margin_px", p.residual_gate_margin_px,
+          ">= 0");
   require(p.fundamental_threshold_px > 0, "fundamental_threshold_px", p.fundamental_threshold_px,
           "> 0");
   require(p.fundamental_confidence > 0 && p.fundamental_confidence < 1, "fundamental_confidence",
@@ -103,6 +108,17 @@ std::string toString(FlowInit init) {
       return "none";
   }
   return "?";
+}
+
+ResidualGateRegion residualGateRegionFromString(const std::string& text) {
+  if (text == "everywhere") return ResidualGateRegion::Everywhere;
+  if (text == "near_nonrigid") return ResidualGateRegion::NearNonRigid;
+  throw std::invalid_argument("residual_gate_region = '" + text +
+                              "': must be everywhere or near_nonrigid");
+}
+
+std::string toString(ResidualGateRegion region) {
+  return region == ResidualGateRegion::Everywhere ? "everywhere" : "near_nonrigid";
 }
 
 FeatureTracker::FeatureTracker(FeatureTrackerParams params) : params_(params) { validate(params_); }
@@ -218,15 +234,35 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
 
   kltTimer.reset();
 
+  std::vector<size_t> matched;  // passed forward-backward
+  const double maxFb2 = params_.max_fb_error_px * params_.max_fb_error_px;
+  for (size_t k = 0; k < forward.size(); ++k) {
+    const cv::Point2f d = back[k] - previous[forward[k]];
+    if (!backStatus[k] || d.dot(d) > maxFb2) {
+      ++stats_.lost_fb;
+      continue;
+    }
+    matched.push_back(forward[k]);
+  }
+  const double maxResidual = residualLimit(residual, matched);
+  const std::vector<cv::Rect> gateBoxes = residualGateBoxes(frame);
+  const auto gated = [&](size_t i) {
+    if (residual[i] <= maxResidual) return false;
+    if (params_.residual_gate_region == ResidualGateRegion::Everywhere) return true;
+    // Tracks on the objects are the classification's to judge (dropping them cost recall).
+    if (insideAnyObjectMask(frame, current[i])) return false;
+    const cv::Point from(cvRound(previous[i].x), cvRound(previous[i].y));
+    const cv::Point to(cvRound(current[i].x), cvRound(current[i].y));
+    return std::any_of(gateBoxes.begin(), gateBoxes.end(),
+                       [&](const cv::Rect& b) { return b.contains(from) || b.contains(to); });
+  };
+
   std::vector<Track> survivors;
   std::vector<cv::Point2f> survivorsPrevious;
   std::vector<double> residuals, offsets;
-  const double maxFb2 = params_.max_fb_error_px * params_.max_fb_error_px;
-  for (size_t k = 0; k < forward.size(); ++k) {
-    const size_t i = forward[k];
-    const cv::Point2f d = back[k] - previous[i];
-    if (!backStatus[k] || d.dot(d) > maxFb2) {
-      ++stats_.lost_fb;
+  for (const size_t i : matched) {
+    if (gated(i)) {
+      ++stats_.lost_residual;
       continue;
     }
     Track t = tracks_[i];
@@ -254,6 +290,34 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
     }
     median_velocity_ = cv::Point2f(float(core::upperMedian(vx)), float(core::upperMedian(vy)));
   }
+}
+
+double FeatureTracker::residualLimit(const std::vector<float>& residual,
+                                     const std::vector<size_t>& matched) const {
+  if (params_.max_klt_residual_ratio <= 0 || matched.empty())
+    return std::numeric_limits<double>::infinity();
+  std::vector<double> r;
+  r.reserve(matched.size());
+  for (const size_t i : matched) r.push_back(residual[i]);
+  return params_.max_klt_residual_ratio * core::upperMedian(r);
+}
+
+std::vector<cv::Rect> FeatureTracker::residualGateBoxes(const core::Frame& frame) const {
+  std::vector<cv::Rect> boxes;
+  if (params_.residual_gate_region != ResidualGateRegion::NearNonRigid) return boxes;
+  const int margin = int(std::ceil(params_.residual_gate_margin_px));
+  for (const auto& m : frame.object_masks) {
+    // The model of the mask's detection, or of its track when it segments a predicted box.
+    const core::MotionModel* model = nullptr;
+    if (m.detection >= 0 && m.detection < int(frame.detections.size()))
+      model = &frame.detections[size_t(m.detection)].model;
+    else if (m.track >= 0 && m.track < int(frame.tracks.size()))
+      model = &frame.tracks[size_t(m.track)].model;
+    if (!model || *model != core::MotionModel::NonRigid) continue;
+    boxes.emplace_back(m.roi.x - margin, m.roi.y - margin, m.roi.width + 2 * margin,
+                       m.roi.height + 2 * margin);
+  }
+  return boxes;
 }
 
 void FeatureTracker::rejectByFundamental(const core::Frame& frame,

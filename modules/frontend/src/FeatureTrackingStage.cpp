@@ -34,6 +34,10 @@ void FeatureTrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
   FT_READ(int, t.klt_max_iterations, "klt_max_iterations");
   FT_READ(double, t.klt_epsilon, "klt_epsilon");
   FT_READ(double, t.max_fb_error_px, "max_fb_error_px");
+  FT_READ(double, t.max_klt_residual_ratio, "max_klt_residual_ratio");
+  t.residual_gate_region = residualGateRegionFromString(
+      c.read_string(s, "residual_gate_region", toString(t.residual_gate_region)));
+  FT_READ(double, t.residual_gate_margin_px, "residual_gate_margin_px");
   t.flow_init = flowInitFromString(c.read_string(s, "flow_init", toString(t.flow_init)));
   t.fundamental_ransac = core::readBool(c, s, "fundamental_ransac", t.fundamental_ransac);
   FT_READ(double, t.fundamental_threshold_px, "fundamental_threshold_px");
@@ -66,6 +70,15 @@ void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   FT_WRITE(t.klt_epsilon, "klt_epsilon", "px; KLT stops when an update moves less");
   FT_WRITE(t.max_fb_error_px, "max_fb_error_px",
            "px; forward-backward check: tracked back, a point must land this close");
+  FT_WRITE(t.max_klt_residual_ratio, "max_klt_residual_ratio",
+           "not the method: drop a track whose KLT residual (mean absolute grey difference over "
+           "the window) is above this times the frame's median (0: off)");
+  core::writeKey(
+      c, s, "residual_gate_region", toString(t.residual_gate_region),
+      "where the residual gate applies: near_nonrigid (tracks outside the masks near a non-rigid "
+      "object's box) or everywhere");
+  FT_WRITE(t.residual_gate_margin_px, "residual_gate_margin_px",
+           "px around a non-rigid object's box within which near_nonrigid gates");
   core::writeKey(c, s, "flow_init", toString(t.flow_init),
           "KLT start: gyro (rotation K R K^-1; previous_motion without gyro samples), "
           "previous_motion (constant velocity per point) or none");
@@ -95,6 +108,7 @@ void FeatureTrackingStage::process(core::Frame& frame) {
   incoming_ += size_t(s.incoming);
   lostKlt_ += size_t(s.lost_klt);
   lostFb_ += size_t(s.lost_fb);
+  lostResidual_ += size_t(s.lost_residual);
   lostRansac_ += size_t(s.lost_ransac);
   trackingMs_.push_back(s.ms_pyramid + s.ms_klt + s.ms_ransac);
   extractionMs_.push_back(s.ms_detect);
@@ -129,6 +143,7 @@ std::vector<std::pair<std::string, double>> FeatureTrackingStage::statistics() c
           {"mean_track_length", ended_ ? endedLengthSum_ / double(ended_) : 0},
           {"lost_klt_fraction", double(lostKlt_) / in},
           {"lost_forward_backward_fraction", double(lostFb_) / in},
+          {"lost_residual_fraction", double(lostResidual_) / in},
           {"lost_ransac_fraction", double(lostRansac_) / in},
           {"tracking_ms_median", core::upperMedian(trackingMs_)},
           {"extraction_ms_median", core::upperMedian(extractionMs_)}};
