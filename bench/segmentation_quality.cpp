@@ -34,11 +34,13 @@
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Median.h>
 #include <dynslam/detection/GroundTruthDetector.h>
+#include <dynslam/segmentation/FloorRemovalStage.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
 #include <dynslam/sim/MakeSequence.h>
 #include <dynslam/tracking/TrackingStage.h>
 
+#include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -51,6 +53,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -205,7 +208,8 @@ void printCars(const Scores& s) {
 }
 
 /// The perception stages of a pipeline ini after Detection (--pipeline): Segmentation,
-/// Tracking, Segmentation:Retrack. One instance per scenario: the tracker keeps state.
+/// Tracking, Segmentation:Retrack, and FloorRemoval when its [pipeline] stages list it. One
+/// instance per scenario: the tracker keeps state.
 class PerceptionStages {
  public:
   explicit PerceptionStages(const core::IniConfig& cfg) {
@@ -214,6 +218,12 @@ class PerceptionStages {
     retrack_.configure(cfg, "Retrack");
     if (retrack_.options().boxes != segmentation::SegmentedBoxes::TrackedDetections)
       throw core::UsageError("--pipeline: [Retrack] boxes must be tracked_detections");
+    std::istringstream stages(cfg.ini().read_string("pipeline", "stages", ""));
+    for (std::string name; stages >> name;)
+      if (name == "FloorRemoval") {
+        floor_.emplace();
+        floor_->configure(cfg, "FloorRemoval");
+      }
   }
   /// The depth of the track that took each detection of the last frame (0: none).
   const std::vector<double>& trackDepth() const { return trackDepth_; }
@@ -231,6 +241,7 @@ class PerceptionStages {
     segmentation_.process(frame);
     tracking_.process(frame);
     retrack_.process(frame);
+    if (floor_) floor_->process(frame);
     std::vector<core::ObjectMask> out(detections.size());
     for (const auto& m : frame.object_masks)
       if (m.detection >= 0 && size_t(m.detection) < out.size()) out[size_t(m.detection)] = m;
@@ -244,6 +255,7 @@ class PerceptionStages {
  private:
   segmentation::SegmentationStage segmentation_, retrack_;
   tracking::TrackingStage tracking_;
+  std::optional<segmentation::FloorRemovalStage> floor_;
   std::vector<double> trackDepth_;
 };
 

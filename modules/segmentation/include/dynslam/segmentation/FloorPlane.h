@@ -1,0 +1,48 @@
+#pragma once
+// The floor under the objects, fitted to the depth image (not the method). A person's box
+// reaches down to the floor at its feet, where the floor has the person's depth, so the
+// depth-threshold mask (method.md section 1) takes a band of floor; corners on that floor are
+// then classified with the walker and lost as static constraints (outdoor_street_high: half of
+// the background features wrongly classified dynamic lie within 5 cm of the ground).
+#include <dynslam/core/Frame.h>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace dynslam::segmentation {
+
+struct FloorPlaneParams {
+  int sample_stride_px = 8;        ///< depth samples on a grid of this pitch, outside the boxes
+  int iterations = 100;            ///< RANSAC hypotheses (three samples each)
+  double inlier_m = 0.02;          ///< m; plus 2 sigma of depth noise at the sample's depth
+  double depth_sigma_z2 = 0.0015;  ///< depth noise sigma(z) = depth_sigma_z2 z^2 (1/m)
+  double max_depth_m = 8;          ///< samples farther than this are too noisy to fit
+  double max_tilt_deg = 10;        ///< angle between the plane's normal and "up" (see below)
+  int min_inliers = 150;           ///< fewer: no floor in view
+};
+
+/// A plane n . P + c = 0 in camera coordinates (metres), n a unit normal pointing to the side
+/// of the camera, so height(P) > 0 above the floor.
+struct FloorPlane {
+  Eigen::Vector3d normal = Eigen::Vector3d(0, -1, 0);
+  double offset = 0;  ///< c: the camera's height above the floor
+  int inliers = 0;
+  double height(const Eigen::Vector3d& P) const { return normal.dot(P) + offset; }
+};
+
+/// "Up" in the camera frame: the mean accelerometer reading of the frame's IMU samples turned
+/// into the camera's axes (at rest it is the reaction to gravity), or the image's up (-y)
+/// without an accelerometer.
+Eigen::Vector3d upInCamera(const core::Frame& frame);
+
+/// RANSAC plane over the depth samples outside `exclude` whose normal is within max_tilt_deg of
+/// `up`, refined by least squares on its inliers; nullopt when none has min_inliers. The
+/// hypotheses come from a fixed seed: the same frame gives the same plane.
+std::optional<FloorPlane> fitFloorPlane(const cv::Mat& depth, const core::CameraIntrinsics& K,
+                                        const std::vector<cv::Rect>& exclude,
+                                        const Eigen::Vector3d& up, const FloorPlaneParams& params);
+
+}  // namespace dynslam::segmentation
