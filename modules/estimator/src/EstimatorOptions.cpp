@@ -29,6 +29,7 @@ void EstimatorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
       c.read_double(s, "motion_prior_sigma_translation", w.motion_prior_sigma_translation);
   w.motion_prior_sigma_rotation =
       c.read_double(s, "motion_prior_sigma_rotation", w.motion_prior_sigma_rotation);
+  w.gyro_rotation_sigma = c.read_double(s, "gyro_rotation_sigma", w.gyro_rotation_sigma);
   w.object_motion_sigma_translation =
       c.read_double(s, "object_motion_sigma_translation", w.object_motion_sigma_translation);
   w.object_motion_sigma_rotation =
@@ -95,6 +96,9 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "m per keyframe interval; RGB-D-only constant-motion prior");
   core::writeKey(c, s, "motion_prior_sigma_rotation", w.motion_prior_sigma_rotation,
                  "rad per keyframe interval; RGB-D-only constant-motion prior");
+  core::writeKey(c, s, "gyro_rotation_sigma", w.gyro_rotation_sigma,
+                 "rad/s; until the IMU is initialized, consecutive keyframes keep the gyro's "
+                 "rotation within this rate times their interval (not the method; 0: off)");
   core::writeKey(c, s, "object_motion_sigma_translation", w.object_motion_sigma_translation,
                  "m per keyframe interval; r_om, a rigid object's change of motion");
   core::writeKey(c, s, "object_motion_sigma_rotation", w.object_motion_sigma_rotation,

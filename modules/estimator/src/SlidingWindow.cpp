@@ -3,6 +3,7 @@
 #include "dynslam/estimator/Marginalizer.h"
 #include "dynslam/estimator/StateBlocks.h"
 #include "dynslam/estimator/factors/GnssPositionFactor.h"
+#include "dynslam/estimator/factors/GyroRotationFactor.h"
 #include "dynslam/estimator/factors/ImuFactor.h"
 #include "dynslam/estimator/factors/NonRigidConstantVelocityFactor.h"
 #include "dynslam/estimator/factors/NonRigidDepthFactor.h"
@@ -53,13 +54,23 @@ class SlidingWindow::ProblemBuilder {
         if (only < 0 || only == a.id || only == b.id)
           sink(std::make_shared<ImuFactor>(b.preintegration, w_.params_.gravity), nullptr,
                {a.pose, a.speed_bias, b.pose, b.speed_bias});
-      } else if (!w_.params_.use_imu && k >= 2) {
-        Keyframe& z = w_.keyframes_[k - 2];
-        if (only < 0 || only == z.id || only == a.id || only == b.id)
-          sink(std::make_shared<RigidSmoothMotionFactor>(
-                   w_.params_.motion_prior_sigma_translation,
-                   w_.params_.motion_prior_sigma_rotation),
-               nullptr, {z.pose, a.pose, b.pose});
+      } else if (!w_.params_.use_imu) {
+        if (k >= 2) {
+          Keyframe& z = w_.keyframes_[k - 2];
+          if (only < 0 || only == z.id || only == a.id || only == b.id)
+            sink(
+                std::make_shared<RigidSmoothMotionFactor>(w_.params_.motion_prior_sigma_translation,
+                                                          w_.params_.motion_prior_sigma_rotation),
+                nullptr, {z.pose, a.pose, b.pose});
+        }
+        // An IMU not yet initialized still gives the rotation (GyroRotationFactor.h).
+        if (b.preintegration && w_.params_.gyro_rotation_sigma > 0 &&
+            (only < 0 || only == a.id || only == b.id)) {
+          const double sigma = w_.params_.gyro_rotation_sigma * b.preintegration->sumDt();
+          sink(std::make_shared<GyroRotationFactor>(b.preintegration->gamma(),
+                                                    sigma * sigma * Eigen::Matrix3d::Identity()),
+               nullptr, {a.pose, b.pose});
+        }
       }
     }
     for (Keyframe& k : w_.keyframes_)

@@ -54,6 +54,14 @@ Eigen::Matrix3d rightJacobianSO3(const Eigen::Vector3d& phi) {
          (a - std::sin(a)) / (a * a * a) * W * W;
 }
 
+Eigen::Vector3d logSO3(const Eigen::Matrix3d& R) {
+  Eigen::Quaterniond q(R);
+  if (q.w() < 0) q.coeffs() = -q.coeffs();
+  const double n = q.vec().norm();
+  if (n < 1e-10) return 2.0 * q.vec() / q.w();  // first order, exact to rounding here
+  return 2.0 * std::atan2(n, q.w()) * q.vec() / n;
+}
+
 Eigen::Matrix3d inverseRightJacobianSO3(const Eigen::Vector3d& phi) {
   const double a = phi.norm();
   const Eigen::Matrix3d W = skew(phi);

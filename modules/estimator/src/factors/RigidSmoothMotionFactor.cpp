@@ -6,18 +6,6 @@
 #include <cmath>
 
 namespace dynslam::estimator {
-namespace {
-
-/// Rotation vector of R (|result| <= pi).
-Eigen::Vector3d logSO3(const Eigen::Matrix3d& R) {
-  Eigen::Quaterniond q(R);
-  if (q.w() < 0) q.coeffs() = -q.coeffs();
-  const double n = q.vec().norm();
-  if (n < 1e-10) return 2.0 * q.vec() / q.w();  // first order, exact to rounding here
-  return 2.0 * std::atan2(n, q.w()) * q.vec() / n;
-}
-
-}  // namespace
 
 RigidSmoothMotionFactor::RigidSmoothMotionFactor(const Matrix6d& information)
     : sqrt_information_(sqrtInformationFromInformation<6>(information)) {}

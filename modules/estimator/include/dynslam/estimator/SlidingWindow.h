@@ -66,6 +66,10 @@ struct SlidingWindowParams {
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
   /// RGB-D only: sigmas of the constant-motion prior per keyframe interval (m, rad).
   double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
+  /// rad/s; > 0: while the window has no IMU factors but the keyframes carry preintegrations
+  /// (IMU not yet initialized, or a restart), consecutive keyframes keep the gyro's rotation
+  /// within this drift rate times their interval (GyroRotationFactor.h; not the method). 0: off.
+  double gyro_rotation_sigma = 0;
   /// r_om: sigmas of a rigid object's change of motion per keyframe interval (m, rad).
   double object_motion_sigma_translation = 0.05, object_motion_sigma_rotation = 0.05;
   /// GNSS antenna in the body frame (m) and the Huber threshold on its whitened residual.

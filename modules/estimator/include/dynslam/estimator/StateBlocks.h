@@ -39,6 +39,8 @@ Eigen::Isometry3d nearestRigid(const Eigen::Isometry3d& T);
 
 /// SO(3) exponential of a rotation vector (small angles handled).
 Eigen::Quaterniond quaternionExp(const Eigen::Vector3d& theta);
+/// SO(3) logarithm: the rotation vector of R (|result| <= pi).
+Eigen::Vector3d logSO3(const Eigen::Matrix3d& R);
 /// Right Jacobian of SO(3) at phi: Exp(phi + d) ~ Exp(phi) Exp(Jr(phi) d).
 Eigen::Matrix3d rightJacobianSO3(const Eigen::Vector3d& phi);
 /// Its inverse: Log(Exp(phi) Exp(d)) ~ phi + Jr^-1(phi) d.
