@@ -24,7 +24,15 @@ const core::ObjectGroundTruthRow* rowOf(const std::vector<core::ObjectGroundTrut
 
 void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
                               const Truth* previous) {
+  std::map<int, bool> matchedNow;  // track id -> matched a detection this frame
+  for (const auto& t : frame.tracks) {
+    matchedNow[t.id] = t.detection >= 0;
+    if (t.detection >= 0 && size_t(t.detection) < frame.detections.size() &&
+        frame.detections[size_t(t.detection)].truth_id >= 0)
+      trackTruth[t.id] = frame.detections[size_t(t.detection)].truth_id;
+  }
   std::map<int, std::pair<size_t, size_t>> perObject;  // label -> features, Static ones
+  std::map<int, std::map<std::string, size_t>> missCauses;  // label -> cause -> features
   std::map<std::int64_t, int> labelOfFeature;
   for (const auto& f : frame.features) {
     const int label = labelAt(truth.labels, f.pixel);
@@ -44,6 +52,15 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
       tnDepth += !truthDynamic && !predicted;
     }
     if (truthDynamic && !predicted) ++(f.object_id < 0 ? fnNoObject : fnJudgedStatic);
+    if (row && !row->moving && predicted) {
+      const auto t = trackTruth.find(f.object_id);
+      const bool own = t != trackTruth.end() && t->second == label;
+      const char* cause = f.object_id < 0           ? "no track"
+                          : !own                    ? "another object's track"
+                          : matchedNow[f.object_id] ? "own track (matched)"
+                                                    : "own track (coasting)";
+      ++missCauses[label][cause];
+    }
     if (row) {
       ++perObject[label].first;
       perObject[label].second += !predicted;
@@ -56,6 +73,12 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     auto& tally = row->moving ? moving[row->category] : nonMoving[row->category];
     ++tally.first;
     tally.second += row->moving ? !isStatic : isStatic;
+    if (!row->moving && !isStatic) {
+      const auto& causes = missCauses[label];
+      const auto top = std::max_element(causes.begin(), causes.end(),
+                                        [](auto& a, auto& b) { return a.second < b.second; });
+      ++nonMovingMisses[row->category][top->first];
+    }
   }
   if (!previous) return;
   for (const auto& s : frame.rigid_sets) {

@@ -41,6 +41,14 @@ struct ClassificationScore {
   std::map<std::string, std::pair<size_t, size_t>> moving;  ///< same for moving: dynamic
   std::map<std::string, std::vector<double>> rotErrDeg, transErrM;  ///< per category
   size_t rigidSetsUnmatched = 0;  ///< sets whose members mostly show no moving object
+  /// category -> the frames a non-moving object was judged moving, by where most of its
+  /// features that were not Static went: "own track (matched)" / "(coasting)" (the track whose
+  /// last matched detection is that object, matched this frame or not), "another object's
+  /// track" (a mask or carried membership of another object took them), "no track". Tracks
+  /// are known by their detections' simulator ids (the ground-truth detector).
+  std::map<std::string, std::map<std::string, size_t>> nonMovingMisses;
+  /// Track id -> the simulator id of the detection it last matched (ground-truth detector).
+  std::map<int, int> trackTruth;
 
   void add(const core::Frame& frame, const Truth& truth, const Truth* previous);
   double precision() const { return tp + fp ? double(tp) / double(tp + fp) : 0; }

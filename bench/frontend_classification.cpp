@@ -246,6 +246,11 @@ void run(const Settings& s) {
       const std::string what = "non-moving " + category + ": frames classified static";
       printRatio(what.c_str(), n.first ? double(n.second) / n.first : 0, 0.90, true, "");
       std::printf("%-44s (%zu object-frames with >= 3 features)\n", "", n.first);
+      std::string causes;
+      for (const auto& [cause, count] : score.nonMovingMisses[category])
+        causes += (causes.empty() ? "" : ", ") + std::to_string(count) + " " + cause;
+      std::printf("%-44s frames judged moving, by cause: %s\n", "",
+                  causes.empty() ? "none" : causes.c_str());
     }
     for (const auto& [category, n] : score.moving)
       std::printf("%-44s %8.4g (%zu object-frames)\n",

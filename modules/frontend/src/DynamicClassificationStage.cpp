@@ -28,6 +28,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.moving_feature_speed = c.read_double(s, "moving_feature_speed", p.moving_feature_speed);
   p.moving_feature_max_speed =
       c.read_double(s, "moving_feature_max_speed", p.moving_feature_max_speed);
+  p.max_nonrigid_flow_speed =
+      c.read_double(s, "max_nonrigid_flow_speed", p.max_nonrigid_flow_speed);
   p.depth_window = c.read_int(s, "depth_window", p.depth_window);
   p.far_object_min_depth = c.read_double(s, "far_object_min_depth", p.far_object_min_depth);
   p.far_object_pixel_sigma = c.read_double(s, "far_object_pixel_sigma", p.far_object_pixel_sigma);
@@ -74,6 +76,10 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
                  "m/s; a feature faster than this in a still object's mask is non-rigid (0: off)");
   core::writeKey(c, s, "moving_feature_max_speed", p.moving_feature_max_speed,
                  "m/s; ... and slower than this (faster: a depth jump or a slid track)");
+  core::writeKey(c, s, "max_nonrigid_flow_speed", p.max_nonrigid_flow_speed,
+                 "m/s; a person's feature whose flow is faster (by speed_noise_sigmas of its "
+                 "depth noise) is a depth jump: no speed, not in the object's (not the method; "
+                 "0: off)");
   core::writeKey(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
   core::writeKey(c, s, "depth_window", p.depth_window,
@@ -132,6 +138,8 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
   if (!(p.moving_feature_max_speed > p.moving_feature_speed))
     fail("moving_feature_max_speed", std::to_string(p.moving_feature_max_speed),
          "must be > moving_feature_speed");
+  if (!(p.max_nonrigid_flow_speed >= 0))
+    fail("max_nonrigid_flow_speed", std::to_string(p.max_nonrigid_flow_speed), "must be >= 0");
   if (!(p.far_object_min_depth >= 0))
     fail("far_object_min_depth", std::to_string(p.far_object_min_depth), "must be >= 0");
   if (!(p.far_object_pixel_sigma > 0))

@@ -298,15 +298,21 @@ void DynamicClassifier::process(core::Frame& frame) {
     for (const auto& o : h->second) {  // oldest first: the longest span within the window
       if (o.frame + window < now || o.frame >= now || !(frame.t > o.t)) continue;
       const Eigen::Vector3d F = sceneFlow(o.P, c.P, cameraFromPast(o.frame));
-      velocities[c.region->object_id].push_back(F / (frame.t - o.t));
-      cur[i].speed = F.norm() / (frame.t - o.t);
+      const double dt = frame.t - o.t;
+      const double speed = F.norm() / dt;
       // Variance of that velocity from the depth noise of both points (the window median
       // divides a reading's sigma by about sqrt(0.64 w^2)).
       const double reduce = 0.8 * std::max(1, params_.depth_window);
       const double sp = params_.camera.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
       const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
-      const double dt = frame.t - o.t;
-      velocityVar[c.region->object_id] += (sp * sp + sq * sq) / (dt * dt);
+      const double var = (sp * sp + sq * sq) / (dt * dt);
+      // Faster than a person moves, beyond its noise: a depth jump (max_nonrigid_flow_speed).
+      if (params_.max_nonrigid_flow_speed > 0 && c.region->model == core::MotionModel::NonRigid &&
+          speed > params_.max_nonrigid_flow_speed + params_.speed_noise_sigmas * std::sqrt(var))
+        break;
+      velocities[c.region->object_id].push_back(F / dt);
+      cur[i].speed = speed;
+      velocityVar[c.region->object_id] += var;
       cameraVarSum[c.region->object_id] += cameraVarianceSince(o.frame) / (dt * dt);
       break;
     }

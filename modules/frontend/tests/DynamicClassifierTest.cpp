@@ -504,6 +504,41 @@ TEST(DynamicClassifier, MovingFeaturesInAStillObjectsMaskAreNonRigid) {
   EXPECT_EQ(run(0.5), 25) << "the walker's features move at 0.85 m/s: NonRigid";
 }
 
+// Most of a standing person's features read the wall 2.5 m behind from frame 12 on (tracks that
+// slid off its silhouette, depth windows that flipped surfaces): their flow, metres per second,
+// outvotes the still ones in the component-wise median and the person is judged moving. With
+// max_nonrigid_flow_speed those flows measure nothing and the person stays still.
+TEST(DynamicClassifier, FlowsFasterThanAPersonMovesAreDepthJumpsNotMotion) {
+  auto run = [](double maxSpeed) {
+    DynamicClassifierParams params;
+    params.max_nonrigid_flow_speed = maxSpeed;
+    const Scene scene;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    for (int k = 0; k < 15; ++k) {
+      f = scene.frame(k);
+      if (k >= 12)
+        for (auto& feat : f.features)
+          if (feat.id >= 2000 && feat.id < 2015) feat.depth += 2.5f;
+      classifier.process(f);
+    }
+    int standing = 0, standingStatic = 0, walkerDynamic = 0;
+    for (const auto& feat : f.features) {
+      if (feat.id >= 2000 && feat.id < 3000) {
+        ++standing;
+        standingStatic += feat.feature_class == core::FeatureClass::Static;
+      }
+      if (feat.id >= 1000 && feat.id < 2000)
+        walkerDynamic += feat.feature_class != core::FeatureClass::Static;
+    }
+    EXPECT_EQ(walkerDynamic, 25) << "the walker (0.85 m/s) is measured as before";
+    return std::make_pair(standingStatic, standing);
+  };
+  EXPECT_EQ(run(0.0).first, 0) << "15 of 25 flows read the wall's jump: judged moving";
+  const auto gated = run(2.5);
+  EXPECT_EQ(gated.first, gated.second) << "the jumps measure nothing: still, every feature Static";
+}
+
 // The walker's mask misses the right half of its box, as masks miss a tenth of a walker's
 // pixels: those features are outside every mask but inside the walker's box. Registered on
 // them too, the camera's translation takes some of the walker's motion; registered on the

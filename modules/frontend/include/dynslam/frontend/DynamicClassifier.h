@@ -67,6 +67,14 @@
 //    Up to moving_feature_max_speed: a faster flow is a depth jump at a silhouette or a
 //    feature whose track slid from one surface onto another (on indoor_people_high a third of
 //    the still objects' features above 0.8 m/s read more than 3 m/s; the walkers', 0.6-1.7).
+//  - max_nonrigid_flow_speed (default 0 = off): such flows, faster than a person moves (by
+//    speed_noise_sigmas of their depth noise: 7 m away a one-frame flow has metres per second
+//    of it), on a person's features are no measurement at all: they do not count towards the
+//    object's speed and the feature is unmeasured (unmeasured_feature_by_depth decides it).
+//    Where a walker passes a standing person, the standing person's features read up to 100
+//    m/s (a track that slid off the silhouette onto the wall behind, a window depth that
+//    flipped surfaces), and with half its features such the component-wise median said it
+//    moved.
 //  - far_object_min_depth (default 0 = off): objects beyond the depth range. A detection whose
 //    box has too little depth has no mask (core::ObjectMask::valid false) and, the method
 //    deciding by scene flow, its features stayed Static: on outdoor_street_high, where the
@@ -140,6 +148,11 @@ struct DynamicClassifierParams {
   /// than this (m/s) is NonRigid (not the method; 0: off). See the file comment.
   double moving_feature_speed = 0.0;
   double moving_feature_max_speed = 2.5;  ///< m/s; faster flows do not count (see above)
+  /// m/s; > 0: a feature of a non-rigid object (a person) whose scene flow over the window is
+  /// faster than this, by speed_noise_sigmas of its depth noise, measured a depth jump, not a
+  /// motion: its flow does not count towards the object's speed and the feature is unmeasured
+  /// (not the method; 0: off). See the file comment.
+  double max_nonrigid_flow_speed = 0.0;
   /// Side of the window whose robust median depth places each feature in 3-D (1: the
   /// feature's own depth reading). See the file comment.
   int depth_window = 5;
