@@ -1,5 +1,6 @@
 #include "classification_scoring.h"
 
+#include <dynslam/frontend/ObjectMembership.h>
 #include <dynslam/frontend/RigidRegistration.h>
 
 #include <algorithm>
@@ -25,6 +26,16 @@ const core::ObjectGroundTruthRow* rowOf(const std::vector<core::ObjectGroundTrut
 void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
                               const Truth* previous) {
   std::map<int, bool> matchedNow;  // track id -> matched a detection this frame
+  // Whether a track's mask holds a pixel this frame (else its features are carried over).
+  const auto regions = frontend::objectRegions(frame);
+  const auto inMaskOf = [&regions](int trackId, const cv::Point2f& pixel) {
+    const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
+    for (const auto& r : regions)
+      if (r.object_id == trackId && r.roi.contains(px) &&
+          r.mask.at<uint8_t>(px.y - r.roi.y, px.x - r.roi.x) != 0)
+        return true;
+    return false;
+  };
   for (const auto& t : frame.tracks) {
     matchedNow[t.id] = t.detection >= 0;
     if (t.detection >= 0 && size_t(t.detection) < frame.detections.size() &&
@@ -55,10 +66,11 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     if (row && !row->moving && predicted) {
       const auto t = trackTruth.find(f.object_id);
       const bool own = t != trackTruth.end() && t->second == label;
-      const char* cause = f.object_id < 0           ? "no track"
-                          : !own                    ? "another object's track"
-                          : matchedNow[f.object_id] ? "own track (matched)"
-                                                    : "own track (coasting)";
+      const char* cause = f.object_id < 0                  ? "no track"
+                          : own && matchedNow[f.object_id] ? "own track (matched)"
+                          : own                            ? "own track (coasting)"
+                          : inMaskOf(f.object_id, f.pixel) ? "another object's mask"
+                                                           : "another object's carried membership";
       ++missCauses[label][cause];
     }
     if (row) {

@@ -44,8 +44,9 @@ struct ClassificationScore {
   /// category -> the frames a non-moving object was judged moving, by where most of its
   /// features that were not Static went: "own track (matched)" / "(coasting)" (the track whose
   /// last matched detection is that object, matched this frame or not), "another object's
-  /// track" (a mask or carried membership of another object took them), "no track". Tracks
-  /// are known by their detections' simulator ids (the ground-truth detector).
+  /// mask" (another track's mask holds the pixel this frame), "another object's carried
+  /// membership" (no mask of that track holds it: carried over from the last frame), "no
+  /// track". Tracks are known by their detections' simulator ids (the ground-truth detector).
   std::map<std::string, std::map<std::string, size_t>> nonMovingMisses;
   /// Track id -> the simulator id of the detection it last matched (ground-truth detector).
   std::map<int, int> trackTruth;
