@@ -23,6 +23,7 @@
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Median.h>
+#include <dynslam/core/Pipeline.h>
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/frontend/DynamicClassificationStage.h>
@@ -30,7 +31,6 @@
 #include <dynslam/io/SensorSync.h>
 #include <runner/BuiltinStages.h>
 
-#include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
@@ -41,7 +41,6 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace {
 
@@ -103,17 +102,11 @@ void run(const Settings& s) {
       s.features == "klt" || (s.features.empty() && !registry.contains("FeatureTracking"));
 
   std::vector<StageSlot> stages;
-  std::stringstream list(cfg.ini().read_string("pipeline", "stages", ""));
-  for (std::string item; list >> item;) {
-    item.erase(std::remove(item.begin(), item.end(), ','), item.end());
-    if (item.empty()) continue;
-    const size_t colon = item.find(':');
-    const std::string cls = item.substr(0, colon);
-    const std::string section = colon == std::string::npos ? cls : item.substr(colon + 1);
-    StageSlot slot{item, nullptr, {}};
-    if (!(cls == "FeatureTracking" && standIn)) {
-      slot.stage = registry.create(cls);
-      slot.stage->configure(cfg, section);
+  for (const auto& e : core::pipelineStageEntries(cfg)) {
+    StageSlot slot{e.entry, nullptr, {}};
+    if (!(e.class_name == "FeatureTracking" && standIn)) {
+      slot.stage = registry.create(e.class_name);
+      slot.stage->configure(cfg, e.section);
     } else {
       slot.name = "FeatureTracking (KLT stand-in)";
     }

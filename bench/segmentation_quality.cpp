@@ -33,6 +33,7 @@
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Median.h>
+#include <dynslam/core/Pipeline.h>
 #include <dynslam/detection/GroundTruthDetector.h>
 #include <dynslam/segmentation/FloorRemovalStage.h>
 #include <dynslam/segmentation/MaskQuality.h>
@@ -40,7 +41,6 @@
 #include <dynslam/sim/MakeSequence.h>
 #include <dynslam/tracking/TrackingStage.h>
 
-#include <mrpt/config/CConfigFileBase.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -53,7 +53,6 @@
 #include <memory>
 #include <numeric>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -218,11 +217,10 @@ class PerceptionStages {
     retrack_.configure(cfg, "Retrack");
     if (retrack_.options().boxes != segmentation::SegmentedBoxes::TrackedDetections)
       throw core::UsageError("--pipeline: [Retrack] boxes must be tracked_detections");
-    std::istringstream stages(cfg.ini().read_string("pipeline", "stages", ""));
-    for (std::string name; stages >> name;)
-      if (name == "FloorRemoval") {
+    for (const auto& e : core::pipelineStageEntries(cfg))
+      if (e.class_name == "FloorRemoval") {
         floor_.emplace();
-        floor_->configure(cfg, "FloorRemoval");
+        floor_->configure(cfg, e.section);
       }
   }
   /// The depth of the track that took each detection of the last frame (0: none).

@@ -22,21 +22,29 @@ std::vector<std::string> splitList(std::string text) {
 
 }  // namespace
 
+std::vector<StageEntry> pipelineStageEntries(const IniConfig& cfg) {
+  std::vector<StageEntry> entries;
+  for (const auto& entry : splitList(cfg.ini().read_string(Pipeline::kSection, "stages", ""))) {
+    const auto colon = entry.find(':');
+    const std::string className = entry.substr(0, colon);
+    entries.push_back(
+        {entry, className, colon == std::string::npos ? className : entry.substr(colon + 1)});
+  }
+  return entries;
+}
+
 Pipeline::Pipeline(const IniConfig& cfg, const StageRegistry& registry) {
   for (const auto& key : cfg.keys(kSection))
     if (key != "stages")
       throw ConfigError("unknown key '" + key + "' in section [pipeline] of " + cfg.source() +
                         "; known keys: stages");
-  for (const auto& entry : splitList(cfg.ini().read_string(kSection, "stages", ""))) {
-    const auto colon = entry.find(':');
-    const std::string className = entry.substr(0, colon);
-    const std::string section = colon == std::string::npos ? entry : entry.substr(colon + 1);
-    auto stage = registry.create(className);
-    stage->setLoggerName(section);
-    stage->configure(cfg, section);
+  for (const auto& e : pipelineStageEntries(cfg)) {
+    auto stage = registry.create(e.class_name);
+    stage->setLoggerName(e.section);
+    stage->configure(cfg, e.section);
     stages_.push_back(std::move(stage));
-    sections_.push_back(section);
-    times_.push_back({section, {}});
+    sections_.push_back(e.section);
+    times_.push_back({e.section, {}});
   }
 }
 

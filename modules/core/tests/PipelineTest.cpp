@@ -62,6 +62,18 @@ TEST(Pipeline, RunsStagesInIniOrderWithTheirOwnSections) {
   EXPECT_NO_THROW(rejectUnknownSections(cfg, used));
 }
 
+TEST(Pipeline, StageEntriesSplitOnCommasAndBlanksAndNameTheirSections) {
+  const auto cfg =
+      IniConfig::fromText("[pipeline]\nstages = ShiftTime:first,ShiftTime:second  FakePose\n");
+  const auto e = pipelineStageEntries(cfg);
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_EQ(e[0].entry, "ShiftTime:first");
+  EXPECT_EQ(e[1].class_name, "ShiftTime");
+  EXPECT_EQ(e[1].section, "second");
+  EXPECT_EQ(e[2].class_name, "FakePose");
+  EXPECT_EQ(e[2].section, "FakePose");
+}
+
 TEST(Pipeline, UnknownStageClassIsAnErrorNamingIt) {
   const auto cfg = IniConfig::fromText("[pipeline]\nstages = ShiftTime, Teleporter\n");
   try {

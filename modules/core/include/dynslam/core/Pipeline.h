@@ -18,6 +18,17 @@ namespace dynslam::core {
 class Stage;
 class StageRegistry;
 
+/// One entry of [pipeline] stages: "Class" or "Class:Section".
+struct StageEntry {
+  std::string entry;       ///< as written
+  std::string class_name;  ///< the registered stage class
+  std::string section;     ///< the section it reads: the class name unless the entry names one
+};
+
+/// The entries [pipeline] stages lists, in order (commas and white space both separate). For
+/// programs that build some of the stages themselves (the benches) as Pipeline would.
+std::vector<StageEntry> pipelineStageEntries(const IniConfig& cfg);
+
 /// Wall-clock time each stage spent on each frame, in milliseconds.
 struct StageTimes {
   std::string name;
