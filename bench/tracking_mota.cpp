@@ -68,15 +68,17 @@ std::vector<double> depthErrors(const CachedRun& run) {
   return errors;
 }
 
-/// --trace: frame i's observations (truth id, box centre, d, d_alt, true depth) and the tracks
-/// after the update (id, state, misses, the truth id of the observation taken, filter depth).
+/// --trace: frame i's observations (truth id, box centre and size, d, d_alt, true depth) and the
+/// tracks after the update (id, state, misses, the truth id of the observation taken, box centre
+/// and size, filter depth).
 void printTrace(size_t i, const bench::CachedFrame& f, const std::vector<core::Track>& tracks) {
   std::printf("frame %zu  obs:", i);
   for (size_t k = 0; k < f.observations.size(); ++k) {
     const auto& o = f.observations[k];
     const auto& truth = f.observation_truth[k];
-    std::printf(" [%zu t%d x%.0f d%.2f a%.2f true%.2f v%.2f]", k, truth.id,
-                o.box.x + o.box.width / 2, o.depth, o.depth_alt, truth.depth, truth.visible);
+    std::printf(" [%zu t%d x%.0f %.0fx%.0f d%.2f a%.2f true%.2f v%.2f]", k, truth.id,
+                o.box.x + o.box.width / 2, o.box.width, o.box.height, o.depth, o.depth_alt,
+                truth.depth, truth.visible);
   }
   std::printf("\n           tracks:");
   for (const auto& t : tracks) {
@@ -85,7 +87,8 @@ void printTrace(size_t i, const bench::CachedFrame& f, const std::vector<core::T
                                                                 : 'L';
     const std::string taken =
         t.detection >= 0 ? "t" + std::to_string(f.observation_truth[t.detection].id) : "-";
-    std::printf(" [#%d %c%d %s d%.2f]", t.id, state, t.misses, taken.c_str(), t.depth);
+    std::printf(" [#%d %c%d %s x%.0f %.0fx%.0f d%.2f]", t.id, state, t.misses, taken.c_str(),
+                t.box.x + t.box.width / 2, t.box.width, t.box.height, t.depth);
   }
   std::printf("\n");
 }
