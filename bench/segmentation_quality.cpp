@@ -114,7 +114,7 @@ void tallyPixels(const cv::Mat& label, const cv::Mat& depth, uint16_t id, const 
   s.maskObject += m.valid ? cv::countNonZero(m.mask) : 0;
 }
 
-void printTable(const Scores& s) {
+void printTable(const Scores& s, bool pipeline) {
   const double iou = mean(s.iou);
   std::printf(
       "  mask IoU, people >= 50 %% visible (%zu): mean %.3f, median %.3f  [target >= 0.80:"
@@ -158,10 +158,18 @@ void printTable(const Scores& s) {
     if (s.objects[i] == 3) three.push_back(s.ms[i]);
   const double t = dynslam::core::upperMedian(s.ms);
   std::printf(
-      "  time per frame: median %.3f ms (%.1f objects/frame on average), median %.3f ms "
-      "over the %zu frames with 3 objects  [target <= 1.2 ms: ratio %.2f, %s]\n",
-      t, mean(s.objects), dynslam::core::upperMedian(three), three.size(), t / 1.2,
-      t <= 1.2 ? "met" : "MISSED");
+      "  time per frame%s: median %.3f ms (%.1f objects/frame on average), median %.3f ms "
+      "over the %zu frames with 3 objects",
+      pipeline ? ", every --pipeline stage" : "", t, mean(s.objects),
+      dynslam::core::upperMedian(three), three.size());
+  // The 1.2 ms target is one segmentation's; --pipeline times Segmentation, Tracking (with its
+  // colour histograms) and Segmentation:Retrack together.
+  if (pipeline)
+    std::printf(
+        "  [the 1.2 ms target is one segmentation stage's: run without --pipeline, or "
+        "read bench-classification's per-stage medians]\n");
+  else
+    std::printf("  [target <= 1.2 ms: ratio %.2f, %s]\n", t / 1.2, t <= 1.2 ? "met" : "MISSED");
 }
 
 /// One --cases row: person `o` (true visible depth `z`) and its mask `m`; the other object
@@ -349,7 +357,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
               ini.c_str(), sequence->camera().width, sequence->camera().height, s.ms.size(),
               sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
               stages ? "; masks after Segmentation, Tracking and Retrack (--pipeline)" : "");
-  printTable(s);
+  printTable(s, stages.has_value());
   if (cars.seen > 0) printCars(cars);
   std::printf("\n");
 }

@@ -96,11 +96,11 @@ void checkTimingCsv(const std::string& out) {
   ASSERT_TRUE(std::getline(in, header));
   EXPECT_EQ(header,
             "frame,t_s,Detection_ms,Segmentation_ms,Tracking_ms,Retrack_ms,PredictedBoxes_ms,"
-            "FeatureTracking_ms,DynamicClassification_ms,Estimator_ms,pipeline_ms");
+            "FeatureTracking_ms,FloorRemoval_ms,DynamicClassification_ms,Estimator_ms,pipeline_ms");
   size_t rows = 0;
   for (std::string line; std::getline(in, line); ++rows) {
     const auto fields = split(line, ',');
-    ASSERT_EQ(fields.size(), 11u) << line;
+    ASSERT_EQ(fields.size(), 12u) << line;
     EXPECT_EQ(std::stoul(fields[0]), rows) << line;
     const double total = std::stod(fields.back());
     for (size_t i = 2; i + 1 < fields.size(); ++i) {
