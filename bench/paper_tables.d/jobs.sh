@@ -166,9 +166,7 @@ timing() {
   yoloxIni > "$T/sim_vio_yolox_realtime.ini"
   # shellcheck disable=SC2046
   "$BIN/dynslam" --config "$T/sim_vio_yolox_realtime.ini" --rawlog "$S/sim.rawlog" --out "$T/rt" \
-    --quiet --no-map --realtime $(variantSettings full) \
-    --set "pipeline.stages=Detection Segmentation Tracking Segmentation:Retrack Segmentation:PredictedBoxes FeatureTracking DynamicClassification Estimator" \
-    > "$T/rt.log" 2>&1 || true
+    --quiet --no-map --realtime $(variantSettings full) > "$T/rt.log" 2>&1 || true
 }
 
 "$@"
