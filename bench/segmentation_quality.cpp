@@ -54,6 +54,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -163,7 +164,7 @@ void printTable(const Scores& s, bool pipeline) {
       pipeline ? ", every --pipeline stage" : "", t, mean(s.objects),
       dynslam::core::upperMedian(three), three.size());
   // The 1.2 ms target is one segmentation's; --pipeline times Segmentation, Tracking (with its
-  // colour histograms) and Segmentation:Retrack together.
+  // colour histograms), Segmentation:Retrack and FloorRemoval when listed, together.
   if (pipeline)
     std::printf(
         "  [the 1.2 ms target is one segmentation stage's: run without --pipeline, or "
@@ -233,6 +234,11 @@ class PerceptionStages {
   }
   /// The depth of the track that took each detection of the last frame (0: none).
   const std::vector<double>& trackDepth() const { return trackDepth_; }
+  /// The stages run, for the report: "Segmentation, Tracking and Retrack[ and FloorRemoval]".
+  std::string names() const {
+    return floor_ ? "Segmentation, Tracking, Retrack and FloorRemoval"
+                  : "Segmentation, Tracking and Retrack";
+  }
   /// The detections' masks (one per detection, in order) at the end of the three stages.
   std::vector<core::ObjectMask> masks(const sim::SimFrame& f,
                                       const std::vector<core::Detection>& detections,
@@ -356,7 +362,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes of objects >= %.2f visible%s\n",
               ini.c_str(), sequence->camera().width, sequence->camera().height, s.ms.size(),
               sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
-              stages ? "; masks after Segmentation, Tracking and Retrack (--pipeline)" : "");
+              stages ? ("; masks after " + stages->names() + " (--pipeline)").c_str() : "");
   printTable(s, stages.has_value());
   if (cars.seen > 0) printCars(cars);
   std::printf("\n");
