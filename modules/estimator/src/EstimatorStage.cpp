@@ -21,13 +21,14 @@ void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& se
   }
   const auto& w = options_.window;
   if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) ||
-      w.solver_threads < 1 || !(w.pixel_sigma > 0) || !(w.huber_sigmas > 0) ||
-      options_.min_pnp_inliers < 4 || !(options_.pnp_max_imu_correction_m >= 0) ||
-      !(options_.pnp_max_imu_correction_deg >= 0))
-    throw core::ConfigError("[" + section + "] in " + cfg.source() +
-                            ": window_size >= 2, max_iterations >= 1, solver_threads >= 1, "
-                            "min_pnp_inliers >= 4, pnp_max_imu_correction_m/_deg >= 0 and "
-                            "positive max_solver_time, pixel_sigma, huber_sigmas are required");
+      w.solver_threads < 1 || w.line_search_steps < 0 || !(w.pixel_sigma > 0) ||
+      !(w.huber_sigmas > 0) || options_.min_pnp_inliers < 4 ||
+      !(options_.pnp_max_imu_correction_m >= 0) || !(options_.pnp_max_imu_correction_deg >= 0))
+    throw core::ConfigError(
+        "[" + section + "] in " + cfg.source() +
+        ": window_size >= 2, max_iterations >= 1, solver_threads >= 1, "
+        "line_search_steps >= 0, min_pnp_inliers >= 4, pnp_max_imu_correction_m/_deg >= 0 and "
+        "positive max_solver_time, pixel_sigma, huber_sigmas are required");
   selector_ = KeyframeSelector(options_.keyframes);
 }
 

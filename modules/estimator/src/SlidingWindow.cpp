@@ -330,6 +330,7 @@ SolveReport SlidingWindow::solve() {
   solver.max_num_iterations = params_.max_iterations;
   solver.max_solver_time_in_seconds = params_.max_solver_time_s;
   solver.num_threads = params_.solver_threads;
+  solver.max_num_line_search_step_size_iterations = params_.line_search_steps;
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
   report.iterations = int(summary.iterations.size());
