@@ -12,7 +12,7 @@
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/core/TrajectoryFile.h>
-#include <dynslam/io/RawlogSource.h>
+#include <dynslam/io/FrameReader.h>
 #include <dynslam/io/SensorSync.h>
 #include <dynslam/io/TrajectoryWriter.h>
 #include <dynslam/viz/MapScene.h>
@@ -89,7 +89,7 @@ class CameraRateClock {
 };
 
 void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
-                  const io::SensorSync* sync, const core::Pipeline* pipeline) {
+                  const io::FrameReader* reader, const core::Pipeline* pipeline) {
   std::ofstream out(path);
   core::JsonWriter j(out);
   j.beginObject();
@@ -131,8 +131,8 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
     j.member("frames_late", static_cast<size_t>(late));
     j.endObject();
   }
-  if (sync) {
-    const auto& c = sync->counts();
+  if (reader) {
+    const io::SyncCounts c = reader->counts();
     j.key("observations").beginObject();
     j.member("total", c.observations).member("rgbd", c.rgbd).member("imu", c.imu);
     j.member("gnss", c.gnss).member("gnss_dropped", c.gnss_dropped).member("other", c.other);
@@ -196,7 +196,7 @@ int runDynslam(const RunnerArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   RunRecord rec;
   std::optional<core::Pipeline> pipeline;
-  std::optional<io::SensorSync> sync;
+  std::optional<io::FrameReader> reader;
   std::optional<io::TumTrajectoryWriter> trajectory;
   std::set<int> objectFiles;  // ids whose objects/<id>.tum this run has created
   std::optional<AnnotatedOutput> annotated;
@@ -241,7 +241,6 @@ int runDynslam(const RunnerArgs& args) {
     auto known = pipeline->sectionsUsed();
     known.push_back(io::SensorSync::kSection);
     core::rejectUnknownSections(cfg, known);
-    sync.emplace(syncOptions);
     timing.emplace((fs::path(args.out) / "timing.csv").string(), *pipeline);
     rec.estimator = pipeline->estimatesPose();
     if (rec.estimator) keyframeLog.emplace((fs::path(args.out) / "keyframes.csv").string());
@@ -249,7 +248,7 @@ int runDynslam(const RunnerArgs& args) {
       std::cerr << "dynslam: no pose estimator in [pipeline] stages of " << args.config
                 << ": frames are read and processed, but trajectory.tum stays empty\n";
 
-    io::RawlogSource source(args.rawlog);
+    reader.emplace(args.rawlog, syncOptions);
     if (args.gui) {
       LiveViewOptions liveOptions;
       liveOptions.max_rate_hz = args.gui_max_rate_hz;
@@ -257,22 +256,13 @@ int runDynslam(const RunnerArgs& args) {
     }
     core::ProgressReporter progress(stderr, !args.quiet && isatty(STDERR_FILENO) != 0);
     std::signal(SIGINT, onInterrupt);
-    std::vector<core::Frame> ready;
     CameraRateClock cameraRate;
-    bool more = true;
-    while (more && !g_interrupted) {
-      const auto obs = source.next();
-      if (obs)
-        sync->push(obs, ready);
-      else {
-        sync->flush(ready);
-        more = false;
-      }
-      for (auto& frame : ready) {
-        if (args.max_frames >= 0 && static_cast<long>(rec.frames) >= args.max_frames) {
-          more = false;
-          break;
-        }
+    while (!g_interrupted) {
+      if (args.max_frames >= 0 && static_cast<long>(rec.frames) >= args.max_frames) break;
+      std::optional<core::Frame> next = reader->next();
+      if (!next) break;
+      core::Frame& frame = *next;
+      {
         if (args.realtime) cameraRate.waitFor(frame.t, rec);
         const auto processStart = std::chrono::steady_clock::now();
         pipeline->process(frame);
@@ -299,8 +289,7 @@ int runDynslam(const RunnerArgs& args) {
                            objectFiles);
         rec.objects = objectFiles.size();
       }
-      ready.clear();
-      if (!args.quiet) progress.update(rec.frames, source.progress());
+      if (!args.quiet) progress.update(rec.frames, reader->progress());
     }
     pipeline->finish();
     if (annotated) annotated->finish();
@@ -355,7 +344,8 @@ int runDynslam(const RunnerArgs& args) {
   }
   if (!args.ground_truth.empty() && !groundTruth.empty())
     scoreRun(args, groundTruth, rec.poses, rec);
-  writeSummary(summaryPath, args, rec, sync ? &*sync : nullptr, pipeline ? &*pipeline : nullptr);
+  writeSummary(summaryPath, args, rec, reader ? &*reader : nullptr,
+               pipeline ? &*pipeline : nullptr);
   std::cerr << "dynslam: wrote " << summaryPath << "\n";
   std::printf("dynslam: %zu frames, %zu poses in %.1f s (%.1f FPS)\n", rec.frames, rec.poses,
               rec.wall_s, rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
