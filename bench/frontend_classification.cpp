@@ -8,12 +8,12 @@
 //   build/bin/bench-classification --rawlog /tmp/7s/7scenes.rawlog --config
 //   params/7scenes_frontend.ini
 //
-// The frames come from the rawlog through io's SensorSync, as in `dynslam`, and go through the
-// stages of the ini's [pipeline] (created from the same registry as `dynslam`; with --sim,
-// Detection.objects is set to DIR/objects.txt). --masks truth replaces, just before
-// DynamicClassification, each mask of a detection that came from the ground truth with the
-// object's true pixels (label == id inside the box): the classification scored without the
-// segmentation's errors. --features klt uses a plain Shi-Tomasi/KLT stand-in
+// The frames come from the rawlog through io's FrameReader (RawlogSource + SensorSync on a thread
+// of their own), as in `dynslam`, and go through the stages of the ini's [pipeline] (created from
+// the same registry as `dynslam`; with --sim, Detection.objects is set to DIR/objects.txt). --masks
+// truth replaces, just before DynamicClassification, each mask of a detection that came from the
+// ground truth with the object's true pixels (label == id inside the box): the classification
+// scored without the segmentation's errors. --features klt uses a plain Shi-Tomasi/KLT stand-in
 // (classification_klt_standin.h) instead of the FeatureTracking stage (the default when no such
 // stage is registered). Scoring rules: classification_scoring.h. Timings: wall clock of each
 // stage per frame, medians within the run.
@@ -27,7 +27,7 @@
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/frontend/DynamicClassificationStage.h>
-#include <dynslam/io/RawlogSource.h>
+#include <dynslam/io/FrameReader.h>
 #include <dynslam/io/SensorSync.h>
 #include <runner/BuiltinStages.h>
 
@@ -114,8 +114,7 @@ void run(const Settings& s) {
   }
   io::SensorSyncOptions syncOptions;
   core::loadOptionsStrict(syncOptions, cfg, io::SensorSync::kSection);
-  io::SensorSync sync(syncOptions);
-  io::RawlogSource source(rawlog);
+  io::FrameReader reader(rawlog, syncOptions);
   bench::KltStandIn klt;
 
   bench::ClassificationScore score;
@@ -124,7 +123,6 @@ void run(const Settings& s) {
   std::vector<double> cameraRotErr, cameraTransErr;
   size_t frames = 0, features = 0, staticFeatures = 0, withDepth = 0;
   size_t objectFeatures = 0, staticObjectFeatures = 0;
-  std::vector<core::Frame> ready;
   // --per-frame: where the static set is contaminated (features of moving objects taken for
   // Static feed the estimator in remove mode) and where moving is over-called.
   std::ofstream perFrame;
@@ -133,20 +131,11 @@ void run(const Settings& s) {
     perFrame << "frame,t_s,static,static_on_moving,dynamic,dynamic_on_still\n";
     if (!perFrame) throw std::runtime_error("cannot write --per-frame '" + s.per_frame + "'");
   }
-  bool more = true;
-  while (more) {
-    const auto obs = source.next();
-    if (obs)
-      sync.push(obs, ready);
-    else {
-      sync.flush(ready);
-      more = false;
-    }
-    for (auto& frame : ready) {
-      if (s.max_frames >= 0 && long(frames) >= s.max_frames) {
-        more = false;
-        break;
-      }
+  while (!(s.max_frames >= 0 && long(frames) >= s.max_frames)) {
+    std::optional<core::Frame> next = reader.next();
+    if (!next) break;
+    core::Frame& frame = *next;
+    {
       std::optional<bench::Truth> truth;
       if (objects) {
         char name[32];
@@ -171,13 +160,14 @@ void run(const Settings& s) {
           slot.stage->process(frame);
         else
           klt.process(frame);
-        slot.ms.push_back(std::chrono::duration<double, std::milli>(
-                              std::chrono::steady_clock::now() - t0)
-                              .count());
+        slot.ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count());
       }
       // The camera motion the classifier removed, against the ground truth.
       for (const auto& slot : stages)
-        if (const auto* dc = dynamic_cast<const frontend::DynamicClassificationStage*>(slot.stage.get());
+        if (const auto* dc =
+                dynamic_cast<const frontend::DynamicClassificationStage*>(slot.stage.get());
             dc && truth && previous && frames > 0) {
           const Eigen::Isometry3d gt = truth->T_world_camera.inverse() * previous->T_world_camera;
           const auto& e = dc->classifier()->lastCameraMotion();
@@ -208,28 +198,30 @@ void run(const Settings& s) {
       }
       if (frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", frames);
     }
-    ready.clear();
   }
   for (auto& slot : stages)
     if (slot.stage) slot.stage->finish();
 
   double lengthSum = 0;
   for (const auto& [id, n] : trackLength) lengthSum += n;
-  std::printf("input          %s, %zu frames, config %s, masks %s, features %s\n",
-              rawlog.c_str(), frames, s.config.c_str(), s.masks.c_str(),
+  std::printf("input          %s, %zu frames, config %s, masks %s, features %s\n", rawlog.c_str(),
+              frames, s.config.c_str(), s.masks.c_str(),
               standIn ? "KLT stand-in" : "FeatureTracking stage");
-  std::printf("features       %.1f per frame (%.1f %% with depth), %zu tracks, mean track length %.1f frames\n",
-              frames ? double(features) / frames : 0, features ? 100.0 * withDepth / features : 0,
-              trackLength.size(), trackLength.empty() ? 0 : lengthSum / trackLength.size());
+  std::printf(
+      "features       %.1f per frame (%.1f %% with depth), %zu tracks, mean track length %.1f "
+      "frames\n",
+      frames ? double(features) / frames : 0, features ? 100.0 * withDepth / features : 0,
+      trackLength.size(), trackLength.empty() ? 0 : lengthSum / trackLength.size());
   if (objects) {
     std::printf("camera motion  median error %.3f deg, %.1f mm per frame (p90 %.3f deg, %.1f mm)\n",
                 dynslam::core::upperMedian(cameraRotErr),
                 1000 * dynslam::core::upperMedian(cameraTransErr), percentile(cameraRotErr, 0.9),
                 1000 * percentile(cameraTransErr, 0.9));
-    std::printf("dynamic class  TP %zu  FP %zu (%zu background, %zu on non-moving objects)  FN %zu "
-                "(%zu on no object, %zu on objects judged static)  TN %zu\n",
-                score.tp, score.fp, score.fpBackground, score.fpNonMovingObject, score.fn,
-                score.fnNoObject, score.fnJudgedStatic, score.tn);
+    std::printf(
+        "dynamic class  TP %zu  FP %zu (%zu background, %zu on non-moving objects)  FN %zu "
+        "(%zu on no object, %zu on objects judged static)  TN %zu\n",
+        score.tp, score.fp, score.fpBackground, score.fpNonMovingObject, score.fn, score.fnNoObject,
+        score.fnJudgedStatic, score.tn);
     printRatio("dynamic-class precision", score.precision(), 0.95, true, "");
     printRatio("dynamic-class recall", score.recall(), 0.90, true, "");
     std::printf("%-44s precision %.4f, recall %.4f (TP %zu FP %zu FN %zu TN %zu)\n",
@@ -250,9 +242,10 @@ void run(const Settings& s) {
                   ("moving " + category + ": frames classified dynamic").c_str(),
                   n.first ? double(n.second) / n.first : 0, n.first);
     const std::map<std::string, std::pair<double, double>> targets{{"person", {2.0, 0.02}},
-                                                                    {"car", {0.5, 0.01}}};
+                                                                   {"car", {0.5, 0.01}}};
     for (const auto& [category, errs] : score.rotErrDeg) {
-      const auto target = targets.count(category) ? targets.at(category) : std::make_pair(2.0, 0.02);
+      const auto target =
+          targets.count(category) ? targets.at(category) : std::make_pair(2.0, 0.02);
       std::printf("rigid sets on moving %ss: %zu set-frames\n", category.c_str(), errs.size());
       printRatio(("  median rotation error, " + category).c_str(), dynslam::core::upperMedian(errs),
                  target.first, false, " deg");
@@ -262,8 +255,8 @@ void run(const Settings& s) {
     }
     std::printf("rigid sets not on a moving object: %zu\n", score.rigidSetsUnmatched);
   } else {
-    printRatio("features classified static", features ? double(staticFeatures) / features : 0,
-               0.98, true, "");
+    printRatio("features classified static", features ? double(staticFeatures) / features : 0, 0.98,
+               true, "");
     std::printf("%-44s %zu of %zu features on detected objects (%.1f %%), %.4f of them static\n",
                 "  of which on objects:", objectFeatures, features,
                 features ? 100.0 * objectFeatures / features : 0,
