@@ -51,7 +51,10 @@ namespace dynslam::estimator {
 
 struct SlidingWindowParams {
   int window_size = 10;            ///< keyframes in the window
-  int max_iterations = 6;          ///< Ceres iterations per keyframe (7-Scenes: 10 gave the same APE, 1.7x the time)
+  /// Ceres iterations per keyframe: each solve starts from the last one's window, so few are
+  /// needed. 6 -> 4 (2026-11-25): solve median 25 -> 18-20 ms, APE the same over 31 runs
+  /// (README "Estimator"); 7-Scenes: 10 gave the same APE as 6, 1.7x the time.
+  int max_iterations = 4;
   double max_solver_time_s = 0.05; ///< Ceres wall-time limit per keyframe
   /// Ceres threads. 1 keeps runs repeatable: with 2 the Schur sums' order varies, and the tiny
   /// differences change later keyframe and restart decisions (two runs of the same faulted
