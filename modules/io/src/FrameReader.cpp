@@ -47,21 +47,20 @@ void FrameReader::read() {
   }
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    counts_ = sync_.counts();
-    origin_ = sync_.gnssOrigin();
+    final_ = {sync_.counts(), sync_.gnssOrigin()};
     ended_ = true;
   }
   changed_.notify_all();
 }
 
 void FrameReader::publish(std::vector<core::Frame>& ready) {
+  if (ready.empty()) return;
+  const ReadSoFar read{sync_.counts(), sync_.gnssOrigin()};
   std::unique_lock<std::mutex> lock(mutex_);
-  counts_ = sync_.counts();
-  origin_ = sync_.gnssOrigin();
   for (auto& frame : ready) {
     changed_.wait(lock, [&] { return queue_.size() < capacity_ || stopping_; });
     if (stopping_) break;
-    queue_.push_back(std::move(frame));
+    queue_.push_back({std::move(frame), read});
     changed_.notify_all();
   }
   ready.clear();
@@ -71,23 +70,25 @@ std::optional<core::Frame> FrameReader::next() {
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [&] { return !queue_.empty() || ended_; });
   if (!queue_.empty()) {
-    core::Frame frame = std::move(queue_.front());
+    core::Frame frame = std::move(queue_.front().frame);
+    handed_out_ = std::move(queue_.front().read);
     queue_.pop_front();
     changed_.notify_all();
     return frame;
   }
+  handed_out_ = final_;
   if (error_) std::rethrow_exception(error_);
   return std::nullopt;
 }
 
 SyncCounts FrameReader::counts() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return counts_;
+  return handed_out_.counts;
 }
 
 std::optional<Eigen::Vector3d> FrameReader::gnssOrigin() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return origin_;
+  return handed_out_.origin;
 }
 
 }  // namespace dynslam::io

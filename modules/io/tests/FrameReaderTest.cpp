@@ -7,7 +7,9 @@
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/testing/TestEnv.h>
 
+#include <chrono>
 #include <filesystem>
+#include <thread>
 
 using namespace dynslam::io;
 using namespace dynslam::testing;
@@ -58,6 +60,16 @@ TEST(FrameReader, HandsOutTheFramesOfRawlogSourceAndSensorSyncInOrder) {
   EXPECT_DOUBLE_EQ(reader.progress(), 1.0);
   EXPECT_EQ(reader.counts().frames, 30u);
   EXPECT_EQ(reader.counts().imu, 180u);
+}
+
+TEST(FrameReader, CountsWhatWasReadUpToTheLastFrameHandedOutNotWhatWasReadAhead) {
+  const std::string path = scratchDir() + "/counted.rawlog";
+  writeRawlog(path, cameraAndImu());
+  FrameReader reader(path, SensorSyncOptions{}, 8);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(reader.next());
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let it read ahead
+  EXPECT_EQ(reader.counts().frames, 3u);
+  EXPECT_LE(reader.counts().imu, 4u * 6u) << "the IMU samples up to frame 4's camera image";
 }
 
 TEST(FrameReader, ATruncatedRawlogIsAnErrorAfterTheFramesBeforeTheCut) {

@@ -39,7 +39,9 @@ class FrameReader {
 
   /// Fraction of the rawlog read so far, in [0, 1] (ahead of the frames handed out).
   double progress() const { return progress_.load(); }
-  /// The synchronizer's counts and GNSS origin over what has been read so far.
+  /// The synchronizer's counts and GNSS origin as they were when the last frame handed out was
+  /// made (after the end: over the whole rawlog), as a single-threaded loop that stopped there
+  /// would report them; the reading ahead does not show.
   SyncCounts counts() const;
   std::optional<Eigen::Vector3d> gnssOrigin() const;
 
@@ -48,14 +50,23 @@ class FrameReader {
   void publish(std::vector<core::Frame>& ready);
 
   std::unique_ptr<RawlogSource> source_;
-  SensorSync sync_;  // used by the reading thread only; counts and origin copied under mutex_
+  SensorSync sync_;  // the reading thread's only
   const size_t capacity_;
+
+  struct ReadSoFar {
+    SyncCounts counts;
+    std::optional<Eigen::Vector3d> origin;
+  };
+  struct Queued {
+    core::Frame frame;
+    ReadSoFar read;  ///< when the frame was made
+  };
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<core::Frame> queue_;
-  SyncCounts counts_;
-  std::optional<Eigen::Vector3d> origin_;
+  std::deque<Queued> queue_;
+  ReadSoFar handed_out_;  ///< as of the last frame next() returned
+  ReadSoFar final_;       ///< over the whole rawlog, once ended_
   std::exception_ptr error_;
   bool ended_ = false;
   bool stopping_ = false;
