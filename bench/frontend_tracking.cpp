@@ -114,6 +114,8 @@ cv::Point2d reproject(const cv::Point2f& pixel, double depth, const core::Camera
 
 Figures run(const std::string& rawlog, const frontend::FeatureTrackerParams& params,
             long long maxFrames, const std::optional<SimTruth>& truth) {
+  // On this thread, not io::FrameReader's: the stage's time is taken as the process's CPU time,
+  // which a reading thread would add to.
   io::RawlogSource source(rawlog);
   io::SensorSync sync;
   frontend::FeatureTracker tracker(params);
