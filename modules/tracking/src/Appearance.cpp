@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace dynslam::tracking {
 namespace {
@@ -23,33 +24,27 @@ bool addPartHistogram(const cv::Mat& bgr, cv::Rect region, const cv::Mat& depth,
                       float* h) {
   region &= cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (region.area() < 50) return false;
-  // Pixel (x, y) of `sampled` is pixel (kStride x, kStride y) of the region.
-  cv::Mat sampled((region.height + kStride - 1) / kStride, (region.width + kStride - 1) / kStride,
-                  CV_8UC3),
-      hsv;
-  for (int y = 0; y < sampled.rows; ++y) {
-    const cv::Vec3b* from = bgr.ptr<cv::Vec3b>(region.y + y * kStride) + region.x;
-    cv::Vec3b* to = sampled.ptr<cv::Vec3b>(y);
-    for (int x = 0; x < sampled.cols; ++x) to[x] = from[x * kStride];
+  // The sampled pixels within the depth band, gathered into one row before the colour
+  // conversion: a box holds a third to a half of background, which need not be converted.
+  thread_local std::vector<cv::Vec3b> gathered;
+  gathered.clear();
+  for (int y = region.y; y < region.y + region.height; y += kStride) {
+    const cv::Vec3b* colour = bgr.ptr<cv::Vec3b>(y);
+    const float* z = depth.empty() ? nullptr : depth.ptr<float>(y);
+    for (int x = region.x; x < region.x + region.width; x += kStride)
+      if (!z || std::abs(z[x] - objectDepth) < kAppearanceDepthBand) gathered.push_back(colour[x]);
   }
-  cv::cvtColor(sampled, hsv, cv::COLOR_BGR2HSV);  // H in [0, 180)
-  int counted = 0;
-  for (int y = 0; y < hsv.rows; ++y) {
-    const cv::Vec3b* row = hsv.ptr<cv::Vec3b>(y);
-    const float* z = depth.empty() ? nullptr : depth.ptr<float>(region.y + y * kStride) + region.x;
-    for (int x = 0; x < hsv.cols; ++x) {
-      if (z && !(std::abs(z[x * kStride] - objectDepth) < kAppearanceDepthBand)) continue;
-      ++counted;
-      const int hue = row[x][0], sat = row[x][1], val = row[x][2];
-      if (val < 40 || sat < 40)
-        ++h[64 + std::min(3, val / 64)];
-      else
-        ++h[std::min(15, hue * 16 / 180) * 4 + std::min(3, sat / 64)];
-    }
-  }
-  if (counted * kStride * kStride < 50) {
-    std::fill(h, h + kPartBins, 0.0f);
-    return false;
+  const int counted = int(gathered.size());
+  if (counted * kStride * kStride < 50) return false;
+  cv::Mat hsv;
+  cv::cvtColor(cv::Mat(1, counted, CV_8UC3, gathered.data()), hsv, cv::COLOR_BGR2HSV);
+  const cv::Vec3b* row = hsv.ptr<cv::Vec3b>(0);  // H in [0, 180)
+  for (int i = 0; i < counted; ++i) {
+    const int hue = row[i][0], sat = row[i][1], val = row[i][2];
+    if (val < 40 || sat < 40)
+      ++h[64 + std::min(3, val / 64)];
+    else
+      ++h[std::min(15, hue * 16 / 180) * 4 + std::min(3, sat / 64)];
   }
   for (int i = 0; i < kPartBins; ++i) h[i] /= float(counted);
   return true;
