@@ -58,3 +58,10 @@ awk -v fps="$fps" -v total="$elapsed" '
   }' "$R.rss"
 "$BIN/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align se3 --json "$R/ape.json" > /dev/null 2>&1 || true
 echo "status $status, $FRAMES frames in ${elapsed} s ($fps FPS), APE RMSE $(jsonField "$R/ape.json" rmse) m, restarts $(jsonField "$R/summary.json" resets)"
+# The static map (map.3Dscene) keeps one point per occupied voxel and grows with what the camera
+# has seen (and, as the trajectory drifts, with walls seen again a little elsewhere), up to
+# MapSceneOptions::max_points (1,000,000): say so, since it is in the growth above.
+mapPoints=$(jsonField "$R/summary.json" map_points)
+if [ -n "$mapPoints" ] && [ "$mapPoints" -gt 0 ]; then
+  echo "the static map holds $mapPoints points (about 64 bytes each, $(( mapPoints * 64 / 1048576 )) MB) and grows with the space seen; --dynslam-args \"--no-map\" measures the rest"
+fi
