@@ -135,69 +135,66 @@ void run(const Settings& s) {
     std::optional<core::Frame> next = reader.next();
     if (!next) break;
     core::Frame& frame = *next;
-    {
-      std::optional<bench::Truth> truth;
-      if (objects) {
-        char name[32];
-        std::snprintf(name, sizeof name, "%06zu.png", frame.index);
-        bench::Truth t;
-        const std::string path = (fs::path(s.sim) / "labels" / name).string();
-        t.labels = cv::imread(path, cv::IMREAD_UNCHANGED);
-        if (t.labels.empty() || t.labels.type() != CV_16UC1)
-          throw std::runtime_error("cannot read the 16-bit label image '" + path + "'");
-        t.objects = objects->byFrame(frame.index);
-        if (frame.index >= cameras.size())
-          throw std::runtime_error("groundtruth.tum has no pose for frame " +
-                                   std::to_string(frame.index));
-        t.T_world_camera = cameras[frame.index].T_world_body;
-        truth = std::move(t);
-      }
-      for (auto& slot : stages) {
-        if (truth && s.masks == "truth" && slot.name.rfind("DynamicClassification", 0) == 0)
-          useTrueMasks(frame, truth->labels);
-        const auto t0 = std::chrono::steady_clock::now();
-        if (slot.stage)
-          slot.stage->process(frame);
-        else
-          klt.process(frame);
-        slot.ms.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                .count());
-      }
-      // The camera motion the classifier removed, against the ground truth.
-      for (const auto& slot : stages)
-        if (const auto* dc =
-                dynamic_cast<const frontend::DynamicClassificationStage*>(slot.stage.get());
-            dc && truth && previous && frames > 0) {
-          const Eigen::Isometry3d gt = truth->T_world_camera.inverse() * previous->T_world_camera;
-          const auto& e = dc->classifier()->lastCameraMotion();
-          cameraRotErr.push_back(frontend::rotationAngleDeg(e.motion.R.transpose() * gt.linear()));
-          cameraTransErr.push_back((e.motion.t - gt.translation()).norm());
-        }
-      ++frames;
-      for (const auto& f : frame.features) {
-        ++features;
-        staticFeatures += f.feature_class == core::FeatureClass::Static;
-        if (f.object_id >= 0) {
-          ++objectFeatures;
-          staticObjectFeatures += f.feature_class == core::FeatureClass::Static;
-        }
-        withDepth += f.depth > 0;
-        trackLength[f.id] = std::max(trackLength[f.id], f.track_length);
-      }
-      if (truth) {
-        const bool consecutive = previous && frames > 1;
-        const bench::ClassificationScore before = score;
-        score.add(frame, *truth, consecutive ? &*previous : nullptr);
-        if (perFrame.is_open())
-          perFrame << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ','
-                   << (score.tn + score.fn) - (before.tn + before.fn) << ',' << score.fn - before.fn
-                   << ',' << (score.tp + score.fp) - (before.tp + before.fp) << ','
-                   << score.fp - before.fp << '\n';
-        previous = std::move(truth);
-      }
-      if (frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", frames);
+    std::optional<bench::Truth> truth;
+    if (objects) {
+      char name[32];
+      std::snprintf(name, sizeof name, "%06zu.png", frame.index);
+      bench::Truth t;
+      const std::string path = (fs::path(s.sim) / "labels" / name).string();
+      t.labels = cv::imread(path, cv::IMREAD_UNCHANGED);
+      if (t.labels.empty() || t.labels.type() != CV_16UC1)
+        throw std::runtime_error("cannot read the 16-bit label image '" + path + "'");
+      t.objects = objects->byFrame(frame.index);
+      if (frame.index >= cameras.size())
+        throw std::runtime_error("groundtruth.tum has no pose for frame " +
+                                 std::to_string(frame.index));
+      t.T_world_camera = cameras[frame.index].T_world_body;
+      truth = std::move(t);
     }
+    for (auto& slot : stages) {
+      if (truth && s.masks == "truth" && slot.name.rfind("DynamicClassification", 0) == 0)
+        useTrueMasks(frame, truth->labels);
+      const auto t0 = std::chrono::steady_clock::now();
+      if (slot.stage)
+        slot.stage->process(frame);
+      else
+        klt.process(frame);
+      slot.ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    // The camera motion the classifier removed, against the ground truth.
+    for (const auto& slot : stages)
+      if (const auto* dc =
+              dynamic_cast<const frontend::DynamicClassificationStage*>(slot.stage.get());
+          dc && truth && previous && frames > 0) {
+        const Eigen::Isometry3d gt = truth->T_world_camera.inverse() * previous->T_world_camera;
+        const auto& e = dc->classifier()->lastCameraMotion();
+        cameraRotErr.push_back(frontend::rotationAngleDeg(e.motion.R.transpose() * gt.linear()));
+        cameraTransErr.push_back((e.motion.t - gt.translation()).norm());
+      }
+    ++frames;
+    for (const auto& f : frame.features) {
+      ++features;
+      staticFeatures += f.feature_class == core::FeatureClass::Static;
+      if (f.object_id >= 0) {
+        ++objectFeatures;
+        staticObjectFeatures += f.feature_class == core::FeatureClass::Static;
+      }
+      withDepth += f.depth > 0;
+      trackLength[f.id] = std::max(trackLength[f.id], f.track_length);
+    }
+    if (truth) {
+      const bool consecutive = previous && frames > 1;
+      const bench::ClassificationScore before = score;
+      score.add(frame, *truth, consecutive ? &*previous : nullptr);
+      if (perFrame.is_open())
+        perFrame << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ','
+                 << (score.tn + score.fn) - (before.tn + before.fn) << ',' << score.fn - before.fn
+                 << ',' << (score.tp + score.fp) - (before.tp + before.fp) << ','
+                 << score.fp - before.fp << '\n';
+      previous = std::move(truth);
+    }
+    if (frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", frames);
   }
   for (auto& slot : stages)
     if (slot.stage) slot.stage->finish();

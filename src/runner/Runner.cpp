@@ -262,33 +262,30 @@ int runDynslam(const RunnerArgs& args) {
       std::optional<core::Frame> next = reader->next();
       if (!next) break;
       core::Frame& frame = *next;
-      {
-        if (args.realtime) cameraRate.waitFor(frame.t, rec);
-        const auto processStart = std::chrono::steady_clock::now();
-        pipeline->process(frame);
-        timing->append(frame.index, frame.t, *pipeline,
-                       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                                 processStart)
-                           .count());
-        if (keyframeLog) keyframeLog->append(frame);
-        if (annotated) annotated->write(frame);
-        if (map) map->addFrame(frame);
-        if (live) {
-          live->update(frame, *map);
-          lastFrame = frame;
-        }
-        ++rec.frames;
-        rec.imu_samples += frame.imu.size();
-        rec.gnss_fixes += frame.gnss.size();
-        if (frame.T_world_camera) {
-          trajectory->append({frame.t, *frame.T_world_camera});
-          ++rec.poses;
-        }
-        for (const auto& object : frame.object_poses)
-          appendObjectPose(args.out, object.object_id, {frame.t, object.T_world_object},
-                           objectFiles);
-        rec.objects = objectFiles.size();
+      if (args.realtime) cameraRate.waitFor(frame.t, rec);
+      const auto processStart = std::chrono::steady_clock::now();
+      pipeline->process(frame);
+      timing->append(
+          frame.index, frame.t, *pipeline,
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - processStart)
+              .count());
+      if (keyframeLog) keyframeLog->append(frame);
+      if (annotated) annotated->write(frame);
+      if (map) map->addFrame(frame);
+      if (live) {
+        live->update(frame, *map);
+        lastFrame = frame;
       }
+      ++rec.frames;
+      rec.imu_samples += frame.imu.size();
+      rec.gnss_fixes += frame.gnss.size();
+      if (frame.T_world_camera) {
+        trajectory->append({frame.t, *frame.T_world_camera});
+        ++rec.poses;
+      }
+      for (const auto& object : frame.object_poses)
+        appendObjectPose(args.out, object.object_id, {frame.t, object.T_world_object}, objectFiles);
+      rec.objects = objectFiles.size();
       if (!args.quiet) progress.update(rec.frames, reader->progress());
     }
     pipeline->finish();
