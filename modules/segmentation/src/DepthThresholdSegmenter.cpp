@@ -79,7 +79,11 @@ cv::Rect2d candidateBox(const cv::Rect& roi) {
 // (an occluder's pixels are inside its box; a person beside `back` at the same depth shows also
 // outside it), and (b) the surface also shows in `front`'s candidate
 // box outside `back`'s box (an occluder is larger than the part of it in front of `back`; a
-// person behind `back` shows there at its own, farther, depth).
+// person behind `back` shows there at its own, farther, depth). When `front`'s candidate box
+// lies wholly inside `back`'s box, (b) cannot tell, and of two people the one whose box reaches
+// higher in the image is the nearer (heads of similar heights; the bottoms said nothing):
+// indoor_people_high, the surface of the person in front was taken as the hidden person's in
+// most of the severe-occlusion cases that (b) left undecided (seed 16: 1.29 m for 2.44 m).
 bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& back,
                    const TwoMeansResult& c, double margin, int samples) {
   // A detector's box edges are a few pixels off (GroundTruthDetector's 3 px jitter; a box cut at
@@ -113,7 +117,8 @@ bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& 
     ++outside;
     onSurface += std::abs(z - c.near_mean) < margin;
   });
-  return outside > 0 && onSurface >= 0.3 * outside;
+  if (outside == 0) return front.y < back.y - tolerance;
+  return onSurface >= 0.3 * outside;
 }
 
 // Two 2-means clusters more than e apart are two surfaces (an object and what lies behind or
@@ -377,6 +382,7 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     TwoMeansResult c = clusters[i];
     const double e = marginFor(detections[i]);
     bool nearIsObject = twoSurfaces(c, e);
+    bool occluded = false;
     // Is the near surface another detection standing in front?
     const cv::Rect2d candidate = candidateBox(rois[i]);
     for (size_t j = 0; j < n && nearIsObject; ++j) {
@@ -389,9 +395,12 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
         continue;
       if (!standsInFront(depth, rois[j], rois[i], c, ej / 2, params_.m)) continue;
       nearIsObject = false;
+      occluded = true;
       c = behindOccluder(depth, rois[i], rois[j], samples[i], c, ej / 2, e, params_.m, maxDepth[i]);
     }
-    nearIsObject = nearIsExpected(c, expected(i), nearIsObject);
+    // A detection seen standing in front outweighs the track's depth: a track that followed
+    // the occluder's surface would otherwise keep choosing it.
+    if (!occluded) nearIsObject = nearIsExpected(c, expected(i), nearIsObject);
     objectAtExpected(depth, rois[i], params_.m, expected(i), params_.expected_depth_band, c,
                      nearIsObject);
     masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject, maxDepth[i]));

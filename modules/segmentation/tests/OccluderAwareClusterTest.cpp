@@ -117,10 +117,11 @@ TakenSurface segmentTakenSurface(const cv::Rect& a, const cv::Rect& b, const cv:
 
 TEST(OccluderAwareCluster, AMaskWhoseSurfaceAnotherTookIsCutOnWhatLiesBehindIt) {
   // retry_taken_surface (not the method): B, whose own surface (2.4 m) shows beside A (1.2 m),
-  // is cut on A's surface (here because its expected depth says so; in the pipeline, a cluster
-  // choice gone wrong), and the overlap step gives all of those pixels to A: it is cut again on
-  // what its box shows more than e / 2 behind A's surface.
-  const auto r = segmentTakenSurface({100, 20, 60, 200}, {130, 20, 60, 200}, {160, 20, 30, 200},
+  // is cut on A's surface (here because its expected depth says so, and B's box reaching lower
+  // in the image says A does not stand in front; in the pipeline, a cluster choice gone wrong),
+  // and the overlap step gives all of those pixels to A: it is cut again on what its box shows
+  // more than e / 2 behind A's surface.
+  const auto r = segmentTakenSurface({100, 20, 60, 200}, {130, 20, 60, 210}, {160, 20, 30, 200},
                                      {0, 1.2}, 0, 0);
   ASSERT_EQ(r.without.size(), 2u);
   EXPECT_EQ(cv::countNonZero(r.without[1].mask), 0);
@@ -278,4 +279,36 @@ TEST(OccluderAwareCluster, ABoxEndingAFewPixelsAboveTheBottomEdgeCountsAsCutOff)
   const auto masks = segmentPair(depth, a, b);
   EXPECT_NEAR(masks[0].d_t, 1.0, 1e-6) << "A";
   EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
+}
+
+namespace {
+
+/// A 1.2 m away, its box reaching the top edge, stands before B 2.4 m away, whose box (top at
+/// y 30) holds all of A's candidate box: B shows only in the strips beside A (the left one
+/// reaching into B's candidate box). Both boxes end at the bottom edge, so neither the bottoms
+/// nor A's surface outside B's box tell which is in front.
+const Body kFront{{160, 0, 50, 240}, 160, 210, 1.2f}, kHidden{{120, 30, 110, 210}, 120, 230, 2.4f};
+
+}  // namespace
+
+TEST(OccluderAwareCluster, APersonWhoseCandidateBoxLiesInsideTheOthersBoxIsInFrontWhenTaller) {
+  const cv::Mat depth = peopleCutOffAtTheBottom({kHidden, kFront});
+  const auto masks = segmentPair(depth, kFront, kHidden);
+  EXPECT_NEAR(masks[0].d_t, 1.2, 1e-6) << "A";
+  EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
+  EXPECT_NEAR(masks[1].d_t, 2.4, 1e-6) << "B, whose box reaches less high, is behind A";
+  EXPECT_NEAR(masks[1].d_o, 1.2, 1e-6);
+}
+
+TEST(OccluderAwareCluster, ATrackDepthOnTheOccludersSurfaceDoesNotUndoTheOccluder) {
+  // B's track followed A's surface (1.25 m): of B's clusters the one nearer that depth is A's,
+  // but A was seen standing in front (its surface continues outside B's box), so B keeps the
+  // surface behind it.
+  const Body a{{60, 0, 120, 240}, 60, 180, 1.2f}, b{{140, 40, 80, 200}, 140, 220, 2.5f};
+  const cv::Mat depth = peopleCutOffAtTheBottom({b, a});
+  const auto masks = segmenter(ObjectCluster::OccluderAware)
+                         .segment(depth, {person(a.box), person(b.box)}, {1.2, 1.25});
+  EXPECT_NEAR(masks[0].d_t, 1.2, 1e-6) << "A";
+  EXPECT_NEAR(masks[1].d_t, 2.5, 1e-6) << "B";
+  EXPECT_NEAR(masks[1].d_o, 1.2, 1e-6);
 }
