@@ -126,7 +126,8 @@ class DepthThresholdSegmenter {
   /// OccluderAware, the object cluster chosen with the other detections in view).
   /// `expectedDepth` (empty, or one per detection; <= 0: none), not the method: where given,
   /// of a box's two clusters the one nearer (in ratio) that depth is the object, whatever the
-  /// rule above says (a track's depth: SegmentationStage's boxes = tracked_detections).
+  /// rule above says, unless OccluderAware saw another detection standing in front of it (a
+  /// track's depth: SegmentationStage's boxes = tracked_detections).
   /// `fy`: the camera's vertical focal length in pixels, for max_height_person (0: no bound).
   std::vector<core::ObjectMask> segment(const cv::Mat& depth,
                                         const std::vector<core::Detection>& detections,
