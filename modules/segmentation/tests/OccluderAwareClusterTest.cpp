@@ -281,19 +281,14 @@ TEST(OccluderAwareCluster, ABoxEndingAFewPixelsAboveTheBottomEdgeCountsAsCutOff)
   EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
 }
 
-namespace {
-
-/// A 1.2 m away, its box reaching the top edge, stands before B 2.4 m away, whose box (top at
-/// y 30) holds all of A's candidate box: B shows only in the strips beside A (the left one
-/// reaching into B's candidate box). Both boxes end at the bottom edge, so neither the bottoms
-/// nor A's surface outside B's box tell which is in front.
-const Body kFront{{160, 0, 50, 240}, 160, 210, 1.2f}, kHidden{{120, 30, 110, 210}, 120, 230, 2.4f};
-
-}  // namespace
-
 TEST(OccluderAwareCluster, APersonWhoseCandidateBoxLiesInsideTheOthersBoxIsInFrontWhenTaller) {
-  const cv::Mat depth = peopleCutOffAtTheBottom({kHidden, kFront});
-  const auto masks = segmentPair(depth, kFront, kHidden);
+  // A 1.2 m away, its box reaching the top edge, stands before B 2.4 m away, whose box (top at
+  // y 30) holds all of A's candidate box: B shows only in the strips beside A (the left one
+  // reaching into B's candidate box). Both boxes end at the bottom edge, so neither the bottoms
+  // nor A's surface outside B's box tell which is in front.
+  const Body front{{160, 0, 50, 240}, 160, 210, 1.2f}, hidden{{120, 30, 110, 210}, 120, 230, 2.4f};
+  const cv::Mat depth = peopleCutOffAtTheBottom({hidden, front});
+  const auto masks = segmentPair(depth, front, hidden);
   EXPECT_NEAR(masks[0].d_t, 1.2, 1e-6) << "A";
   EXPECT_EQ(masks[0].d_o, 0.0) << "A has no occluder";
   EXPECT_NEAR(masks[1].d_t, 2.4, 1e-6) << "B, whose box reaches less high, is behind A";
