@@ -21,6 +21,46 @@ const core::ObjectGroundTruthRow* rowOf(const std::vector<core::ObjectGroundTrut
   return nullptr;
 }
 
+/// Whether `pixel` lies in the box of a mask that is `valid` (has depth) or not.
+bool inMaskBox(const core::Frame& frame, const cv::Point2f& pixel, bool valid) {
+  const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
+  for (const auto& m : frame.object_masks)
+    if (m.valid == valid && m.roi.contains(px)) return true;
+  return false;
+}
+
+/// ClassificationScore::depthlessMisses' key for the missed feature `f` on object `row`.
+std::string depthlessMissCause(const core::Frame& frame, const Truth& truth,
+                               const core::ObjectGroundTruthRow& row, const core::Feature& f) {
+  const double z = (truth.T_world_camera.inverse() * row.T_world_object).translation().z();
+  const char* band = z < 10 ? "0-10 m" : z < 20 ? "10-20 m" : "20+ m";
+  const auto inTrackBox = [&] {
+    for (const auto& t : frame.tracks)
+      if (t.box.contains(f.pixel)) return true;
+    return false;
+  };
+  const char* where = f.object_id >= 0                     ? "given to an object judged static"
+                      : inMaskBox(frame, f.pixel, false) ? "in a depthless box"
+                      : inMaskBox(frame, f.pixel, true)  ? "in a masked box, outside its mask"
+                      : inTrackBox()                     ? "in a track's box only"
+                                                         : "in no box";
+  return row.category + ", " + band + ": " + where;
+}
+
+/// ClassificationScore::falsePositives' key for the feature `f` wrongly not Static; `row`: the
+/// non-moving object its pixel shows (nullptr: background), `inMask`: its object's mask holds
+/// it, `ownObject`: its object is the one its pixel shows.
+std::string falsePositiveCause(const core::Frame& frame, const core::ObjectGroundTruthRow* row,
+                               const core::Feature& f, bool inMask, bool ownObject) {
+  const char* whose = f.object_id < 0                     ? "no object's"
+                      : inMask && ownObject              ? "its own mask's"
+                      : inMask                           ? "a mask's"
+                      : inMaskBox(frame, f.pixel, false) ? "a depthless box's"
+                                                         : "carried";
+  return (row ? "non-moving " + row->category : std::string("background")) + ": " + whose +
+         (f.depth > 0 ? ", with depth" : ", no depth");
+}
+
 }  // namespace
 
 void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
@@ -55,7 +95,12 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     fp += !truthDynamic && predicted;
     fn += truthDynamic && !predicted;
     tn += !truthDynamic && !predicted;
-    if (!truthDynamic && predicted) ++(row ? fpNonMovingObject : fpBackground);
+    if (!truthDynamic && predicted) {
+      ++(row ? fpNonMovingObject : fpBackground);
+      const auto owner = trackTruth.find(f.object_id);
+      const bool own = row && owner != trackTruth.end() && owner->second == label;
+      ++falsePositives[falsePositiveCause(frame, row, f, inMaskOf(f.object_id, f.pixel), own)];
+    }
     if (f.depth > 0) {
       tpDepth += truthDynamic && predicted;
       fpDepth += !truthDynamic && predicted;
@@ -63,6 +108,8 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
       tnDepth += !truthDynamic && !predicted;
     }
     if (truthDynamic && !predicted) ++(f.object_id < 0 ? fnNoObject : fnJudgedStatic);
+    if (truthDynamic && !predicted && !(f.depth > 0))
+      ++depthlessMisses[depthlessMissCause(frame, truth, *row, f)];
     if (row && !row->moving && predicted) {
       const auto t = trackTruth.find(f.object_id);
       const bool own = t != trackTruth.end() && t->second == label;

@@ -48,6 +48,16 @@ struct ClassificationScore {
   /// membership" (no mask of that track holds it: carried over from the last frame), "no
   /// track". Tracks are known by their detections' simulator ids (the ground-truth detector).
   std::map<std::string, std::map<std::string, size_t>> nonMovingMisses;
+  /// The false negatives without a depth reading, by "category, distance band: where" (the
+  /// object's rigid core 0-10 / 10-20 / 20+ m ahead; where: "given to an object judged static",
+  /// "in a depthless box" (outside its middle half, which far_object_min_depth measures), "in a
+  /// masked box, outside its mask", "in a track's box only", "in no box").
+  std::map<std::string, size_t> depthlessMisses;
+  /// The false positives, by "what the pixel shows: whose feature it was" (what: background, a
+  /// non-moving car or person; whose: "a mask's" (the feature's object's mask holds its pixel),
+  /// "carried" (its object's membership carried over from the last frame), "a depthless box's",
+  /// "no object's"), and with or without depth.
+  std::map<std::string, size_t> falsePositives;
   /// Track id -> the simulator id of the detection it last matched (ground-truth detector).
   std::map<int, int> trackTruth;
 

@@ -3,6 +3,7 @@
 #include "dynslam/frontend/FarPointMotion.h"
 #include "dynslam/frontend/ObjectMembership.h"
 #include "dynslam/frontend/SceneFlow.h"
+#include "dynslam/frontend/WindowDepth.h"
 
 #include <dynslam/core/Median.h>
 #include <algorithm>
@@ -19,29 +20,6 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
     return sum / double(velocities.size());
   }
   return core::componentwiseUpperMedian(velocities).norm();
-}
-
-/// The median depth of the valid pixels within `half` px of `pixel` that lie on the surface of
-/// the pixel itself (within 5 cm or 2 % of its reading; of the window's median when the pixel
-/// has none); 0 when none is valid.
-float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, std::vector<double>& buf) {
-  const int x0 = cvRound(pixel.x), y0 = cvRound(pixel.y);
-  buf.clear();
-  for (int y = std::max(0, y0 - half); y <= std::min(depth.rows - 1, y0 + half); ++y) {
-    const float* row = depth.ptr<float>(y);
-    for (int x = std::max(0, x0 - half); x <= std::min(depth.cols - 1, x0 + half); ++x)
-      if (row[x] > 0) buf.push_back(row[x]);
-  }
-  if (buf.empty()) return 0;
-  // The surface of the feature's own pixel when it has a reading, else the window's main one.
-  const float centre = (x0 >= 0 && y0 >= 0 && x0 < depth.cols && y0 < depth.rows)
-                           ? depth.at<float>(y0, x0)
-                           : 0.f;
-  const double m0 = centre > 0 ? double(centre) : core::upperMedianInPlace(buf);
-  const double band = std::max(0.05, 0.02 * m0);
-  buf.erase(std::remove_if(buf.begin(), buf.end(), [&](double z) { return std::abs(z - m0) > band; }),
-            buf.end());
-  return float(core::upperMedianInPlace(buf));
 }
 
 /// The middle half of `box` in width and height. The far objects' features near their box's
@@ -237,7 +215,8 @@ void DynamicClassifier::process(core::Frame& frame) {
           f.object_id = b.object_id;  // on the object, though not in a mask (none was made)
           break;
         }
-    const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2, buf)
+    const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2,
+                                             params_.camera.depth_sigma_z2, buf)
                              : f.depth;
     if (!(z > 0) || !(f.depth > 0)) continue;
     c.has_point = true;

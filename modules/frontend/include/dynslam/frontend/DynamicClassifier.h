@@ -25,7 +25,8 @@
 //    mean of norms adds up the noise of every feature instead of averaging it out, and one
 //    feature on a depth edge (background depth on an object pixel) moves the mean by metres.
 //  - depth_window (default 5 px): a feature's 3-D point takes the median depth of the window
-//    around it (pixels on the surface of its own reading only), not the single reading at its
+//    around it (pixels on the surface of its own reading only: within 5 cm, 2 % or 3 sigma of
+//    the difference of two readings, camera.depth_sigma_z2), not the single reading at its
 //    pixel: with independent per-pixel noise that is 4x less noise for 25 pixels, which the
 //    speed of a standing person and the rotation of a rigid set both need. 1: the reading.
 //  - speed_noise_sigmas (default 2): the speed must exceed the threshold by twice its expected
