@@ -91,15 +91,16 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     const auto* row = label ? rowOf(truth.objects, label) : nullptr;
     const bool truthDynamic = row && row->moving;
     const bool predicted = f.feature_class != core::FeatureClass::Static;
+    // Whether the feature's object is the track whose detection shows this pixel's object.
+    const auto owner = trackTruth.find(f.object_id);
+    const bool ownTrack = row && owner != trackTruth.end() && owner->second == label;
     tp += truthDynamic && predicted;
     fp += !truthDynamic && predicted;
     fn += truthDynamic && !predicted;
     tn += !truthDynamic && !predicted;
     if (!truthDynamic && predicted) {
       ++(row ? fpNonMovingObject : fpBackground);
-      const auto owner = trackTruth.find(f.object_id);
-      const bool own = row && owner != trackTruth.end() && owner->second == label;
-      ++falsePositives[falsePositiveCause(frame, row, f, inMaskOf(f.object_id, f.pixel), own)];
+      ++falsePositives[falsePositiveCause(frame, row, f, inMaskOf(f.object_id, f.pixel), ownTrack)];
     }
     if (f.depth > 0) {
       tpDepth += truthDynamic && predicted;
@@ -111,13 +112,11 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     if (truthDynamic && !predicted && !(f.depth > 0))
       ++depthlessMisses[depthlessMissCause(frame, truth, *row, f)];
     if (row && !row->moving && predicted) {
-      const auto t = trackTruth.find(f.object_id);
-      const bool own = t != trackTruth.end() && t->second == label;
-      const char* cause = f.object_id < 0                  ? "no track"
-                          : own && matchedNow[f.object_id] ? "own track (matched)"
-                          : own                            ? "own track (coasting)"
-                          : inMaskOf(f.object_id, f.pixel) ? "another object's mask"
-                                                           : "another object's carried membership";
+      const char* cause = f.object_id < 0                       ? "no track"
+                          : ownTrack && matchedNow[f.object_id] ? "own track (matched)"
+                          : ownTrack                            ? "own track (coasting)"
+                          : inMaskOf(f.object_id, f.pixel)      ? "another object's mask"
+                                                                : "another object's carried membership";
       ++missCauses[label][cause];
     }
     if (row) {

@@ -54,9 +54,10 @@ struct ClassificationScore {
   /// masked box, outside its mask", "in a track's box only", "in no box").
   std::map<std::string, size_t> depthlessMisses;
   /// The false positives, by "what the pixel shows: whose feature it was" (what: background, a
-  /// non-moving car or person; whose: "a mask's" (the feature's object's mask holds its pixel),
-  /// "carried" (its object's membership carried over from the last frame), "a depthless box's",
-  /// "no object's"), and with or without depth.
+  /// non-moving car or person; whose: "its own mask's" (the mask of the object's own track holds
+  /// its pixel), "a mask's" (another object's mask holds it), "carried" (its object's membership
+  /// carried over from the last frame), "a depthless box's", "no object's"), and with or without
+  /// depth.
   std::map<std::string, size_t> falsePositives;
   /// Track id -> the simulator id of the detection it last matched (ground-truth detector).
   std::map<int, int> trackTruth;
