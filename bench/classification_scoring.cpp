@@ -61,6 +61,25 @@ std::string falsePositiveCause(const core::Frame& frame, const core::ObjectGroun
          (f.depth > 0 ? ", with depth" : ", no depth");
 }
 
+/// ClassificationScore::trackingErrorPx of feature `f` (with depth; its object `row`, nullptr:
+/// background) seen at `lastPixel` in the previous frame; -1 when it cannot be told.
+double trackingError(const core::Frame& frame, const Truth& truth, const Truth& previous,
+                     const core::ObjectGroundTruthRow* row, const core::Feature& f,
+                     const cv::Point2f& lastPixel) {
+  const auto& k = frame.intrinsics;
+  if (!(f.depth > 0) || !(k.fx > 0)) return -1;
+  const Eigen::Vector3d seen((f.pixel.x - k.cx) / k.fx * f.depth,
+                             (f.pixel.y - k.cy) / k.fy * f.depth, f.depth);
+  Eigen::Vector3d world = truth.T_world_camera * seen;
+  if (const auto* before = row ? rowOf(previous.objects, row->id) : nullptr)
+    world = before->T_world_object * (row->T_world_object.inverse() * world);
+  const Eigen::Vector3d then = previous.T_world_camera.inverse() * world;
+  if (!(then.z() > 0)) return -1;
+  const cv::Point2f predicted(float(k.fx * then.x() / then.z() + k.cx),
+                              float(k.fy * then.y() / then.z() + k.cy));
+  return cv::norm(predicted - lastPixel);
+}
+
 }  // namespace
 
 void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
@@ -85,10 +104,18 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
   std::map<int, std::pair<size_t, size_t>> perObject;  // label -> features, Static ones
   std::map<int, std::map<std::string, size_t>> missCauses;  // label -> cause -> features
   std::map<std::int64_t, int> labelOfFeature;
+  std::map<std::int64_t, cv::Point2f> pixels;
   for (const auto& f : frame.features) {
     const int label = labelAt(truth.labels, f.pixel);
     labelOfFeature[f.id] = label;
+    pixels[f.id] = f.pixel;
     const auto* row = label ? rowOf(truth.objects, label) : nullptr;
+    if (const auto last = lastPixel.find(f.id); previous && last != lastPixel.end())
+      if (const double e = trackingError(frame, truth, *previous, row, f, last->second); e >= 0)
+        trackingErrorPx[!row ? "background"
+                        : row->moving ? "moving " + row->category
+                                      : "non-moving " + row->category]
+            .push_back(e);
     const bool truthDynamic = row && row->moving;
     const bool predicted = f.feature_class != core::FeatureClass::Static;
     // Whether the feature's object is the track whose detection shows this pixel's object.
@@ -138,6 +165,7 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
       ++nonMovingMisses[row->category][top->first];
     }
   }
+  lastPixel = std::move(pixels);
   if (!previous) return;
   for (const auto& s : frame.rigid_sets) {
     std::map<int, int> votes;

@@ -61,6 +61,13 @@ struct ClassificationScore {
   std::map<std::string, size_t> falsePositives;
   /// Track id -> the simulator id of the detection it last matched (ground-truth detector).
   std::map<int, int> trackTruth;
+  /// Feature tracking error, px, of the features with depth tracked from the last frame, by what
+  /// their pixel shows now ("background", "moving car", "non-moving car", ...): the distance
+  /// from their last pixel to where the true motions (camera, and the object's rigid core) put
+  /// the point seen now. The depth's noise enters only through the parallax (second order). A
+  /// person's pose is its torso's: its limbs' tracks read their swing as error.
+  std::map<std::string, std::vector<double>> trackingErrorPx;
+  std::map<std::int64_t, cv::Point2f> lastPixel;  ///< feature id -> its pixel in the last frame
 
   void add(const core::Frame& frame, const Truth& truth, const Truth* previous);
   double precision() const { return tp + fp ? double(tp) / double(tp + fp) : 0; }

@@ -43,6 +43,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.rigid.noise_gates = core::readBool(c, s, "rigid_noise_gates", p.rigid.noise_gates);
   p.rigid.rotation_prior_sigma =
       c.read_double(s, "rigid_rotation_prior_sigma", p.rigid.rotation_prior_sigma);
+  p.rigid.pixel_sigma_px = c.read_double(s, "rigid_pixel_sigma", p.rigid.pixel_sigma_px);
+  p.rigid.ray_gate_sigmas = c.read_double(s, "rigid_ray_gate", p.rigid.ray_gate_sigmas);
   p.camera.ransac.iterations = c.read_int(s, "camera_iterations", p.camera.ransac.iterations);
   p.camera.ransac.inlier_threshold =
       c.read_double(s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold);
@@ -104,6 +106,12 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
   core::writeKey(c, s, "rigid_rotation_prior_sigma", p.rigid.rotation_prior_sigma,
                  "rad per frame; > 0: a rigid set's own rotation is predicted to stay, and the "
                  "registered one blended with it by their variances (not the method; 0: off)");
+  core::writeKey(c, s, "rigid_pixel_sigma", p.rigid.pixel_sigma_px,
+                 "px; > 0: a rigid set's motion is refined with each point's noise along its ray "
+                 "(depth) and across it (this pixel noise), not the method (0: off, Kabsch)");
+  core::writeKey(c, s, "rigid_ray_gate", p.rigid.ray_gate_sigmas,
+                 "sigmas; with rigid_pixel_sigma, a rigid set's motion is refitted on the members "
+                 "within this of the refined motion by their own noise along and across the ray");
   core::writeKey(c, s, "camera_iterations", p.camera.ransac.iterations,
         "RANSAC hypotheses of the camera motion from background points");
   core::writeKey(c, s, "camera_inlier_threshold", p.camera.ransac.inlier_threshold,
@@ -162,6 +170,10 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
   if (!(p.rigid.rotation_prior_sigma >= 0))
     fail("rigid_rotation_prior_sigma", std::to_string(p.rigid.rotation_prior_sigma),
          "must be >= 0");
+  if (!(p.rigid.pixel_sigma_px >= 0))
+    fail("rigid_pixel_sigma", std::to_string(p.rigid.pixel_sigma_px), "must be >= 0");
+  if (!(p.rigid.ray_gate_sigmas > 0))
+    fail("rigid_ray_gate", std::to_string(p.rigid.ray_gate_sigmas), "must be > 0");
   if (p.camera.ransac.iterations < 1)
     fail("camera_iterations", std::to_string(p.camera.ransac.iterations), "must be >= 1");
   if (!(p.camera.ransac.inlier_threshold > 0))

@@ -351,7 +351,9 @@ void DynamicClassifier::process(core::Frame& frame) {
   std::map<int, std::set<std::int64_t>> members, tested;
   for (const auto& [id, objectPairs] : pairs) {
     auto set = sets_.try_emplace(id, params_.rigid, params_.seed + std::uint32_t(id)).first;
-    if (!set->second.update(objectPairs, camera_.motion.R)) continue;
+    if (!set->second.update(objectPairs, camera_.motion.R,
+                            0.5 * (frame.intrinsics.fx + frame.intrinsics.fy)))
+      continue;
     frame.rigid_sets.push_back(set->second.toRigidSet(id));
     ++counts_.rigid_sets;
     members[id].insert(set->second.members().begin(), set->second.members().end());

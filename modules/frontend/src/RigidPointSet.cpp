@@ -1,5 +1,7 @@
 #include "dynslam/frontend/RigidPointSet.h"
 
+#include <dynslam/frontend/RayNoiseRegistration.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,7 +63,7 @@ void AdaptiveRigidPointSet::applyRotationPrior(const std::vector<int>& inliers,
 }
 
 bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
-                                   const Eigen::Matrix3d& cameraRotation) {
+                                   const Eigen::Matrix3d& cameraRotation, double focalPx) {
   last_ = {};
   std::vector<Eigen::Vector3d> p, q;
   p.reserve(pairs.size());
@@ -75,6 +77,8 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
   }
   const auto minMembers = size_t(std::max(3, params_.min_members));
   std::vector<double> weights, gates;
+  std::vector<Eigen::Matrix3d> covP, covQ;  // pixel_sigma_px's refinement
+  const bool onRays = params_.pixel_sigma_px > 0 && focalPx > 0 && params_.depth_sigma_z2 > 0;
   if (params_.depth_sigma_z2 > 0)
     for (size_t i = 0; i < pairs.size(); ++i) {
       const double k = params_.depth_sigma_z2 / std::max(1.0, params_.point_noise_reduction);
@@ -83,7 +87,30 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
       weights.push_back(1.0 / (sp * sp + sq * sq));
       if (params_.noise_gates)
         gates.push_back(std::max(params_.ransac.inlier_threshold, 3 * std::sqrt(sp * sp + sq * sq)));
+      if (onRays) {
+        const double across = params_.pixel_sigma_px / focalPx;
+        covP.push_back(rayCovariance(p[i], sp, across * p[i].z()));
+        covQ.push_back(rayCovariance(q[i], sq, across * q[i].z()));
+      }
     }
+  // The precise registration (pixel_sigma_px: on the rays, refitted on the members that lie
+  // within ray_gate_sigmas there; the membership stays RANSAC's, see the params).
+  auto precise = [&](const RegistrationResult& r) {
+    if (!onRays) return r.motion;
+    const RigidMotion m = refineOnRays(p, q, covP, covQ, r.motion, r.inliers);
+    std::vector<int> in;
+    for (const int i : inliersOnRays(p, q, covP, covQ, m, params_.ray_gate_sigmas))
+      if (std::binary_search(r.inliers.begin(), r.inliers.end(), i)) in.push_back(i);
+    return in.size() >= 3 && in.size() < r.inliers.size()
+               ? refineOnRays(p, q, covP, covQ, m, in)
+               : m;
+  };
+  // rotation_prior_sigma; on the rays the translation for the blended rotation is theirs too.
+  auto applyPrior = [&](const std::vector<int>& inliers, bool continued) {
+    applyRotationPrior(inliers, p, q, weights, cameraRotation, continued);
+    if (onRays && params_.rotation_prior_sigma > 0)
+      motion_.t = translationOnRays(p, q, covP, covQ, motion_.R, inliers);
+  };
 
   // Continuation: hypotheses from the surviving members, plus the last motion (an object
   // moves smoothly from one frame to the next), inliers over all pairs.
@@ -91,14 +118,15 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
     const auto r =
         registerRansac(p, q, params_.ransac, rng_, stillTracked, {motion_}, weights, gates);
     if (r && r->inliers.size() >= minMembers) {
+      const RigidMotion refined = precise(*r);
       std::vector<std::int64_t> ids = idsOf(pairs, r->inliers);
       std::set_difference(ids.begin(), ids.end(), members_.begin(), members_.end(),
                           std::back_inserter(last_.joined));
       std::set_difference(members_.begin(), members_.end(), ids.begin(), ids.end(),
                           std::back_inserter(last_.left));
       members_ = std::move(ids);
-      motion_ = r->motion;
-      applyRotationPrior(r->inliers, p, q, weights, cameraRotation, true);
+      motion_ = refined;
+      applyPrior(r->inliers, true);
       virtual_centroid_ = motion_.apply(virtual_centroid_);
       return true;
     }
@@ -108,9 +136,9 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
   reset();
   const auto r = registerRansac(p, q, params_.ransac, rng_, {}, {}, weights, gates);
   if (!r || r->inliers.size() < minMembers) return false;
+  motion_ = precise(*r);
   members_ = idsOf(pairs, r->inliers);
-  motion_ = r->motion;
-  applyRotationPrior(r->inliers, p, q, weights, cameraRotation, false);
+  applyPrior(r->inliers, false);
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (int i : r->inliers) c += q[size_t(i)];
   virtual_centroid_ = c / double(r->inliers.size());

@@ -617,6 +617,8 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
             std::string::npos);
   EXPECT_NE(messageOf("rigid_rotation_prior_sigma = -0.01\n").find("rigid_rotation_prior_sigma"),
             std::string::npos);
+  EXPECT_NE(messageOf("rigid_pixel_sigma = -0.3\n").find("rigid_pixel_sigma"), std::string::npos);
+  EXPECT_NE(messageOf("rigid_ray_gate = 0\n").find("rigid_ray_gate"), std::string::npos);
 }
 
 }  // namespace
