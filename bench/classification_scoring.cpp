@@ -2,6 +2,7 @@
 
 #include <dynslam/frontend/ObjectMembership.h>
 #include <dynslam/frontend/RigidRegistration.h>
+#include <dynslam/frontend/SceneFlow.h>
 
 #include <algorithm>
 
@@ -68,9 +69,7 @@ double trackingError(const core::Frame& frame, const Truth& truth, const Truth& 
                      const cv::Point2f& lastPixel) {
   const auto& k = frame.intrinsics;
   if (!(f.depth > 0) || !(k.fx > 0)) return -1;
-  const Eigen::Vector3d seen((f.pixel.x - k.cx) / k.fx * f.depth,
-                             (f.pixel.y - k.cy) / k.fy * f.depth, f.depth);
-  Eigen::Vector3d world = truth.T_world_camera * seen;
+  Eigen::Vector3d world = truth.T_world_camera * frontend::backProject(f.pixel, f.depth, k);
   if (const auto* before = row ? rowOf(previous.objects, row->id) : nullptr)
     world = before->T_world_object * (row->T_world_object.inverse() * world);
   const Eigen::Vector3d then = previous.T_world_camera.inverse() * world;

@@ -262,16 +262,10 @@ void run(const Settings& s) {
     }
     std::printf("rigid sets not on a moving object: %zu\n", score.rigidSetsUnmatched);
     std::printf("feature tracking error against the true motions, features with depth (px):\n");
-    for (auto& [what, errs] : score.trackingErrorPx) {
-      const auto q = [&errs](double f) {
-        auto v = errs;
-        const auto n = std::min(v.size() - 1, size_t(f * double(v.size())));
-        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(n), v.end());
-        return v[n];
-      };
-      std::printf("  %-22s median %5.2f  p90 %6.2f  (%zu tracks)\n", what.c_str(), q(0.5), q(0.9),
-                  errs.size());
-    }
+    for (const auto& [what, errs] : score.trackingErrorPx)
+      std::printf("  %-22s median %5.2f  p90 %6.2f  (%zu tracks)\n", what.c_str(),
+                  dynslam::core::upperPercentile(errs, 0.5),
+                  dynslam::core::upperPercentile(errs, 0.9), errs.size());
   } else {
     printRatio("features classified static", features ? double(staticFeatures) / features : 0, 0.98,
                true, "");

@@ -16,6 +16,7 @@
 // 3 ms target in the same run.
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/Config.h>
+#include <dynslam/core/Median.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/frontend/FeatureTracker.h>
 #include <dynslam/frontend/FeatureTrackingStage.h>
@@ -41,13 +42,9 @@ using namespace dynslam;
 
 constexpr double kTargetMs = 3.0;  // issue 5: extraction + tracking <= 3 ms per frame
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0;
-  const size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
-  return v[k];
-}
-double median(const std::vector<double>& v) { return percentile(v, 0.5); }
+// The medians and percentiles of core/Median.h, as every bench reports them.
+double median(const std::vector<double>& v) { return core::upperMedian(v); }
+double percentile(const std::vector<double>& v, double q) { return core::upperPercentile(v, q); }
 
 /// CPU time of the whole process (all threads), ms: what the tracker costs on a quiet machine
 /// even when other processes share the cores (wall time then grows, CPU time does not).

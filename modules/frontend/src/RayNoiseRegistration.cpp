@@ -16,6 +16,12 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   return S;
 }
 
+/// The covariance of a pair's residual q - (R p + t), from its points' covariances.
+Eigen::Matrix3d residualCovariance(const Eigen::Matrix3d& covP, const Eigen::Matrix3d& covQ,
+                                   const Eigen::Matrix3d& R) {
+  return covQ + R * covP * R.transpose();
+}
+
 }  // namespace
 
 Eigen::Matrix3d rayCovariance(const Eigen::Vector3d& point, double along, double across) {
@@ -48,7 +54,7 @@ RigidMotion refineOnRays(const std::vector<Eigen::Vector3d>& p,
       const Eigen::Vector3d Rp = m.R * p[i];
       const Eigen::Vector3d r = q[i] - Rp - m.t;
       // The information of the pair at the current rotation (held fixed within the step).
-      const Eigen::Matrix3d W = (covQ[i] + m.R * covP[i] * m.R.transpose()).inverse();
+      const Eigen::Matrix3d W = residualCovariance(covP[i], covQ[i], m.R).inverse();
       const double mahalanobis = std::sqrt(std::max(0.0, r.dot(W * r)));
       const double huber = mahalanobis > opts.huber_sigmas ? opts.huber_sigmas / mahalanobis : 1;
       // r(omega, dt) ~ r + [R p]x omega - dt for R <- Exp(omega) R, t <- t + dt.
@@ -79,7 +85,7 @@ std::vector<int> inliersOnRays(const std::vector<Eigen::Vector3d>& p,
   std::vector<int> inliers;
   for (size_t i = 0; i < p.size() && i < covP.size() && i < covQ.size(); ++i) {
     const Eigen::Vector3d r = q[i] - motion.apply(p[i]);
-    const Eigen::Matrix3d C = covQ[i] + motion.R * covP[i] * motion.R.transpose();
+    const Eigen::Matrix3d C = residualCovariance(covP[i], covQ[i], motion.R);
     if (r.dot(C.ldlt().solve(r)) < gateSigmas * gateSigmas) inliers.push_back(int(i));
   }
   return inliers;
@@ -94,7 +100,7 @@ Eigen::Vector3d translationOnRays(const std::vector<Eigen::Vector3d>& p,
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
   for (const int i : indices) {
     const auto k = size_t(i);
-    const Eigen::Matrix3d W = (covQ[k] + R * covP[k] * R.transpose()).inverse();
+    const Eigen::Matrix3d W = residualCovariance(covP[k], covQ[k], R).inverse();
     A += W;
     b += W * (q[k] - R * p[k]);
   }

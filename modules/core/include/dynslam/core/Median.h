@@ -23,6 +23,15 @@ double upperMedianInPlace(std::vector<T>& values) {
 /// 0 for no values.
 inline double upperMedian(std::vector<double> values) { return upperMedianInPlace(values); }
 
+/// The element at position floor(q n) (clamped to the last) of the sorted values: the upper
+/// median for q = 0.5, a bench's p90 for q = 0.9. 0 for no values.
+inline double upperPercentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  const auto k = std::min(values.size() - 1, static_cast<size_t>(q * double(values.size())));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
 /// The upper median of each coordinate of `vectors` (any container of Eigen::Vector3d): robust
 /// where one vector in a few is far off. Zero for none.
 template <class Vectors>
