@@ -118,6 +118,20 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
         }
       c.observation_truth.push_back(truth);
     }
+    // The tracker reads appearance_at (reid_at_track_depth) of these only; each keeps a copy of
+    // its box's pixels, not the frame, so that the cache of 900 frames stays small.
+    for (size_t k = 0; k < c.observations.size(); ++k)
+      if (tracking::givenAnothersSurface(c.observations, k)) {
+        const cv::Rect2f& b = frame.detections[k].box;
+        const cv::Rect roi = cv::Rect(cvFloor(b.x) - 1, cvFloor(b.y) - 1, cvCeil(b.width) + 3,
+                                      cvCeil(b.height) + 3) &
+                             cv::Rect(0, 0, frame.rgb.cols, frame.rgb.rows);
+        const cv::Rect2f box = b - cv::Point2f(float(roi.x), float(roi.y));
+        c.observations[k].appearance_at = [rgb = frame.rgb(roi).clone(),
+                                           depth = frame.depth(roi).clone(), box](double d) {
+          return tracking::bodyHistogram(rgb, box, depth, d);
+        };
+      }
     for (const auto& o : sf.objects)
       c.truth.push_back({int(o.id), cv::Rect2d(o.box),
                          o.visible_pixels > 0 && o.visible_fraction >= s.min_visible});

@@ -66,6 +66,14 @@ bool surfaceOfAnother(const std::vector<BoxObservation>& observations, size_t j,
   return false;
 }
 
+}  // namespace
+
+bool givenAnothersSurface(const std::vector<BoxObservation>& observations, size_t j) {
+  return observations[j].depth > 0 && surfaceOfAnother(observations, j, observations[j].depth, 0.0);
+}
+
+namespace {
+
 /// The observations with d_alt kept only where a track may take it: where the cluster the
 /// segmentation chose is another detection's surface (a partly hidden person given its
 /// occluder's depth), or where d_alt is the nearer cluster and nobody else's (a person given the
@@ -238,9 +246,23 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
     if (!observationUsed[j]) startTrack(observations[j], int(j));
 }
 
+double KalmanBoxTracker::reidDistance(const cv::Mat& a, double depth, const BoxObservation& o,
+                                      bool& atDepth) const {
+  const double own = appearanceDistance(a, o.appearance);
+  atDepth = false;
+  if (!(params_.reid_at_track_depth > 0) || !(depth > 0) || !o.appearance_at) return own;
+  const double there = appearanceDistance(a, o.appearance_at(depth));
+  atDepth = there < params_.reid_at_track_depth && there < own;
+  return atDepth ? there : own;
+}
+
 void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observations,
                                   std::vector<int>& observationOf,
                                   std::vector<char>& observationUsed) const {
+  std::vector<char> onAnothersSurface(observations.size(), 0);
+  if (params_.reid_at_track_depth > 0)
+    for (size_t j = 0; j < observations.size(); ++j)
+      onAnothersSurface[j] = givenAnothersSurface(observations, j);
   assignRound(
       tracked_, observations,
       [](const Tracked& tr) {
@@ -251,11 +273,19 @@ void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observation
       [&](const Tracked& tr, const BoxObservation& o) {
         const cv::Rect2f predicted = tr.filter.box();
         const double depth = tr.filter.state()(kD);
-        const double distance = appearanceDistance(tr.appearance, o.appearance);
+        // The colours at the track's depth count only for a detection given another's
+        // surface: otherwise its depth is its own, and a box with something at the track's
+        // depth is one that hides the track's person (looked at for every detection, in the
+        // revival too: true-depth IDF1 0.894 -> 0.840).
+        bool atDepth = false;
+        const size_t j = size_t(&o - observations.data());
+        const double distance = onAnothersSurface[j]
+                                    ? reidDistance(tr.appearance, depth, o, atDepth)
+                                    : appearanceDistance(tr.appearance, o.appearance);
         const cv::Point2f shift =
             (o.box.tl() + o.box.br()) * 0.5f - (predicted.tl() + predicted.br()) * 0.5f;
         const double height = std::max(o.box.height, predicted.height);
-        const bool depthAgrees = !(depth > 0 && o.depth > 0) ||
+        const bool depthAgrees = atDepth || !(depth > 0 && o.depth > 0) ||
                                  std::max(depth, o.depth) < 1.5 * std::min(depth, o.depth);
         const bool near = std::hypot(shift.x, shift.y) <= params_.reid_max_shift * height;
         return distance < params_.reid_max_distance && depthAgrees && near ? 1.0 - distance : 0.0;

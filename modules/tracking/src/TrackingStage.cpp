@@ -33,6 +33,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.reid_max_shift, "reid_max_shift");
   TRACKING_READ(double, t.appearance_memory, "appearance_memory");
   TRACKING_READ(double, t.reid_memory, "reid_memory");
+  TRACKING_READ(double, t.reid_at_track_depth, "reid_at_track_depth");
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
@@ -68,6 +69,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "weight of a track's colour histogram against a new detection's");
   TRACKING_WRITE(t.reid_memory, "reid_memory",
                  "s; with reid: a new track takes a lost or coasting track's id by colour");
+  TRACKING_WRITE(t.reid_at_track_depth, "reid_at_track_depth",
+                 "0 = off; with reid: a coasting track also takes a detection given another's "
+                 "surface whose colours at the track's depth are closer than this (not the method)");
   TRACKING_WRITE(t.alternative_depth, "alternative_depth",
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "
@@ -119,7 +123,8 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
                             " in " + cfg.source() + ": must be >= 0");
   const std::pair<double, const char*> unitInterval[] = {{t.reid_max_distance, "reid_max_distance"},
                                                          {t.appearance_memory, "appearance_memory"},
-                                                         {t.depth_gate, "depth_gate"}};
+                                                         {t.depth_gate, "depth_gate"},
+                                                         {t.reid_at_track_depth, "reid_at_track_depth"}};
   for (const auto& [value, key] : unitInterval)
     if (!(value >= 0 && value <= 1))
       throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +
@@ -155,6 +160,12 @@ void TrackingStage::process(core::Frame& frame) {
     observations.reserve(frame.detections.size());
     for (size_t i = 0; i < frame.detections.size(); ++i)
       observations.push_back(observeDetection(frame, i, usesAppearance));
+    if (usesAppearance && p.reid_at_track_depth > 0)
+      for (size_t i = 0; i < observations.size(); ++i)
+        observations[i].appearance_at = [rgb = frame.rgb, depth = frame.depth,
+                                         box = frame.detections[i].box](double d) {
+          return bodyHistogram(rgb, box, depth, d);
+        };
     const cv::Size image = !frame.rgb.empty() ? frame.rgb.size() : frame.depth.size();
     tracker_.update(observations, image);
   }

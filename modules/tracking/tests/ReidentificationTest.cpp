@@ -60,6 +60,49 @@ TEST(TrackingAppearance, DepthBandLeavesTheOccluderOut) {
   EXPECT_TRUE(bodyHistogram(image, box, depth, 6.0).empty()) << "nothing at that depth";
 }
 
+// A red person 3 m away, hidden for 20 frames, steps out from behind a green one 1.5 m away and
+// is given the green one's depth (the segmentation took the occluder's surface, which the
+// occluder's own detection has): its descriptor shows green and its depth is off by a factor 2. With reid_at_track_depth the coasting track
+// looks at the box at its own depth, finds red there and takes the detection; without, a new
+// track starts. A green person at 1.5 m with nothing red behind it is not taken either way.
+TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGivenTheOccludersDepth) {
+  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(0, 0, 200));
+  cv::Mat depth(480, 640, CV_32FC1, cv::Scalar(3.0f));
+  image(cv::Rect(0, 0, 215, 480)).setTo(cv::Scalar(0, 200, 0));  // the occluder's side
+  depth(cv::Rect(0, 0, 215, 480)).setTo(cv::Scalar(1.5f));
+  const cv::Mat green(480, 640, CV_8UC3, cv::Scalar(0, 200, 0));
+  const cv::Mat near(480, 640, CV_32FC1, cv::Scalar(1.5f));
+  auto run = [&](double atTrackDepth, const cv::Mat& img, const cv::Mat& z) {
+    KalmanBoxTrackerParams params;
+    params.reid_max_distance = 0.4;
+    params.reid_at_track_depth = atTrackDepth;
+    KalmanBoxTracker tracker(params);
+    const cv::Mat red = bodyHistogram(cv::Mat(480, 640, CV_8UC3, cv::Scalar(0, 0, 200)),
+                                      cv::Rect2f(0, 0, 60, 180));
+    int k = 0;
+    for (; k < 10; ++k) {
+      BoxObservation o = person(100 + 10.f * k, 100, 60, 180, 3.0);
+      o.appearance = red;
+      step(tracker, k, {o});
+    }
+    for (; k < 30; ++k) step(tracker, k, {});
+    // The occluder (its own detection) and the person stepping out beside it.
+    BoxObservation occluder = person(100, 60, 115, 300, 1.5);
+    BoxObservation o = person(180, 100, 60, 180, 1.5);
+    for (BoxObservation* b : {&occluder, &o}) {
+      const cv::Rect2f box = b->box;
+      b->appearance = bodyHistogram(img, box, z, 1.5);
+      b->appearance_at = [&, box](double d) { return bodyHistogram(img, box, z, d); };
+    }
+    for (const auto& t : step(tracker, k, {occluder, o}))
+      if (t.detection == 1) return t.id;
+    return -1;
+  };
+  EXPECT_NE(run(0.0, image, depth), 1) << "without: a new track";
+  EXPECT_EQ(run(0.3, image, depth), 1) << "red at the track's depth: re-found";
+  EXPECT_NE(run(0.3, green, near), 1) << "nothing at the track's depth: not taken";
+}
+
 // A person walking right at 300 px/s hides for 20 frames and comes back where it disappeared
 // (it turned round): the constant-velocity prediction is 200 px off, rho is 0, and the method
 // starts a new track. With reid_max_distance the coasting track re-finds it by its colours, and

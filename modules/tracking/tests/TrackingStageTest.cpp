@@ -70,9 +70,10 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "accel_center_px", "accel_area_rel",      "accel_depth",
                           "ratio_walk",      "init_rate_center_px", "init_rate_area_rel",
                           "init_rate_depth", "reid_memory",         "alternative_depth",
-                          "depth_gate",      "depth_gate_frames",   "innovation_gate"})
+                          "depth_gate",      "depth_gate_frames",   "innovation_gate",
+                          "reid_at_track_depth"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 24u);
+  EXPECT_EQ(keys.size(), 25u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
@@ -82,6 +83,8 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   EXPECT_NE(errorOf("[Tracking]\nreid_memory = -1\n").find("reid_memory"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 1.5\n").find("depth_gate"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate_frames = -1\n").find("depth_gate_frames"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nreid_at_track_depth = 2\n").find("reid_at_track_depth"),
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ninnovation_gate = -1\n").find("innovation_gate"),
             std::string::npos);
