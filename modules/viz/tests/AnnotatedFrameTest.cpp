@@ -67,6 +67,29 @@ TEST(AnnotatedFrame, MaskTintedInTheTrackColourBackgroundUntouched) {
   EXPECT_NE(edge, cv::Vec3b(90, 90, 90)) << "the box outline";
 }
 
+// A coasting track's label is its id alone: the text above its box covers a fraction of the
+// width a matched track's "#4 person d=2.30m" covers.
+TEST(AnnotatedFrame, CoastingTracksAreLabelledByTheirIdOnly) {
+  auto labelWidth = [](bool coasting) {
+    core::Frame f = frameWithOnePerson();
+    f.detections.clear();
+    f.object_masks.clear();
+    if (coasting) f.tracks[0].detection = -1;
+    viz::AnnotationOptions o;
+    o.features = false;
+    const cv::Mat img = viz::renderAnnotatedFrame(f, o);
+    int right = -1;  // the rightmost column the label changed, rows just above the box
+    for (int y = 44; y < 58; ++y)
+      for (int x = 100; x < img.cols; ++x)
+        if (img.at<cv::Vec3b>(y, x) != cv::Vec3b(90, 90, 90)) right = std::max(right, x);
+    return right - 100;
+  };
+  const int matched = labelWidth(false), coasting = labelWidth(true);
+  EXPECT_GT(matched, 100) << "#4 person d=2.30m";
+  EXPECT_GT(coasting, 5);
+  EXPECT_LT(coasting, matched / 3);
+}
+
 TEST(AnnotatedFrame, DrawsOnDepthWhenThereIsNoColour) {
   core::Frame f;
   f.depth = cv::Mat(120, 160, CV_32FC1, cv::Scalar(2.5f));

@@ -4,8 +4,8 @@
 //   - each object mask tinted with its track's colour (the detection's own colour when it has
 //     no track), so leaks into the background and holes show at a glance;
 //   - detector boxes thin and grey, with class and score;
-//   - track boxes in the track's colour, labelled "#id class d=2.31m" (dashed-looking thin box
-//     and "(coasting)" while the track predicts without a detection);
+//   - track boxes in the track's colour, labelled "#id class d=2.31m" ("no depth" without one);
+//     while the track predicts without a detection, a thin box labelled "#id ~" only;
 //   - tracked features as small dots coloured by their class (FeatureClass): static green,
 //     rigid orange, non-rigid magenta, so a person's features classified static stand out;
 //   - a header with the frame index, time and counts.
