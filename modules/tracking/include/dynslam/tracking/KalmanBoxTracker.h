@@ -79,8 +79,9 @@ struct KalmanBoxTrackerParams {
   /// the depth factor is waived. A person stepping out from behind another is often given the
   /// occluder's depth; its descriptor then shows the occluder and the detection started a new
   /// identity. bench-tracking with the segmentation's depth, 24 seeds: IDF1 0.710 -> 0.729 at
-  /// 0.5 (true depth unchanged); but whole-system camera APE worse on 4 of 12 runs by 9-19 %
-  /// (README "Perception"), so the shipped inis leave it off. Not for reid_memory's revival:
+  /// 0.5 (true depth unchanged); the whole system's camera APE moved on 6 of 18 runs, 4 worse
+  /// by 9-19 %, 2 better by 4 and 24 % (README "Perception"), so the shipped inis leave it off
+  /// until more runs say which way it goes. Not for reid_memory's revival:
   /// there a new track's box that hides a coasting person took that person's identity.
   double reid_at_track_depth = 0.0;
   /// Not the method: a detection whose segmentation had two clusters matches a track by
