@@ -74,8 +74,8 @@ double trackingError(const core::Frame& frame, const Truth& truth, const Truth& 
     world = before->T_world_object * (row->T_world_object.inverse() * world);
   const Eigen::Vector3d then = previous.T_world_camera.inverse() * world;
   if (!(then.z() > 0)) return -1;
-  const cv::Point2f predicted(float(k.fx * then.x() / then.z() + k.cx),
-                              float(k.fy * then.y() / then.z() + k.cy));
+  const Eigen::Vector2d uv = frontend::project(then, k);
+  const cv::Point2f predicted(float(uv.x()), float(uv.y()));
   return cv::norm(predicted - lastPixel);
 }
 

@@ -20,6 +20,7 @@
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/frontend/FeatureTracker.h>
 #include <dynslam/frontend/FeatureTrackingStage.h>
+#include <dynslam/frontend/SceneFlow.h>
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
 
@@ -104,9 +105,10 @@ struct Figures {
 /// Where a static point seen at `pixel` with `depth` in one frame appears in the next.
 cv::Point2d reproject(const cv::Point2f& pixel, double depth, const core::CameraIntrinsics& K,
                       const Eigen::Isometry3d& T_world_from, const Eigen::Isometry3d& T_world_to) {
-  const Eigen::Vector3d p((pixel.x - K.cx) / K.fx * depth, (pixel.y - K.cy) / K.fy * depth, depth);
-  const Eigen::Vector3d q = T_world_to.inverse() * (T_world_from * p);
-  return {K.fx * q.x() / q.z() + K.cx, K.fy * q.y() / q.z() + K.cy};
+  const Eigen::Vector3d q =
+      T_world_to.inverse() * (T_world_from * frontend::backProject(pixel, depth, K));
+  const Eigen::Vector2d uv = frontend::project(q, K);
+  return {uv.x(), uv.y()};
 }
 
 Figures run(const std::string& rawlog, const frontend::FeatureTrackerParams& params,

@@ -7,9 +7,11 @@
 namespace dynslam::frontend {
 namespace {
 
-bool project(const Eigen::Vector3d& P, const core::CameraIntrinsics& k, Eigen::Vector2d& uv) {
+/// project() of a point clearly in front of the camera; false otherwise.
+bool projectInFront(const Eigen::Vector3d& P, const core::CameraIntrinsics& k,
+                    Eigen::Vector2d& uv) {
   if (!(P.z() > 1e-9)) return false;
-  uv = {k.fx * P.x() / P.z() + k.cx, k.fy * P.y() / P.z() + k.cy};
+  uv = project(P, k);
   return true;
 }
 
@@ -28,8 +30,8 @@ double farPointResidualPx(const cv::Point2f& previous, const cv::Point2f& curren
                           double minDepth) {
   const Eigen::Vector3d ray = backProject(previous, 1.0, k);  // depth 1 along the ray
   Eigen::Vector2d atInfinity, atMinDepth;
-  if (!project(T_cur_prev.linear() * ray, k, atInfinity) ||
-      !project(T_cur_prev * (minDepth * ray), k, atMinDepth))
+  if (!projectInFront(T_cur_prev.linear() * ray, k, atInfinity) ||
+      !projectInFront(T_cur_prev * (minDepth * ray), k, atMinDepth))
     return 0.0;
   return distanceToSegment({current.x, current.y}, atMinDepth, atInfinity);
 }

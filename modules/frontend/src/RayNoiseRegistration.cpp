@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -81,9 +82,13 @@ std::vector<int> inliersOnRays(const std::vector<Eigen::Vector3d>& p,
                                const std::vector<Eigen::Vector3d>& q,
                                const std::vector<Eigen::Matrix3d>& covP,
                                const std::vector<Eigen::Matrix3d>& covQ, const RigidMotion& motion,
-                               double gateSigmas) {
+                               double gateSigmas, const std::vector<int>& indices) {
+  const size_t pairs = std::min({p.size(), q.size(), covP.size(), covQ.size()});
+  const size_t n = indices.empty() ? pairs : indices.size();
   std::vector<int> inliers;
-  for (size_t i = 0; i < p.size() && i < covP.size() && i < covQ.size(); ++i) {
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = indices.empty() ? k : size_t(indices[k]);
+    if (i >= pairs) continue;
     const Eigen::Vector3d r = q[i] - motion.apply(p[i]);
     const Eigen::Matrix3d C = residualCovariance(covP[i], covQ[i], motion.R);
     if (r.dot(C.ldlt().solve(r)) < gateSigmas * gateSigmas) inliers.push_back(int(i));

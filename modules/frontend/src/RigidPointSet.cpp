@@ -98,9 +98,8 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
   auto precise = [&](const RegistrationResult& r) {
     if (!onRays) return r.motion;
     const RigidMotion m = refineOnRays(p, q, covP, covQ, r.motion, r.inliers);
-    std::vector<int> in;
-    for (const int i : inliersOnRays(p, q, covP, covQ, m, params_.ray_gate_sigmas))
-      if (std::binary_search(r.inliers.begin(), r.inliers.end(), i)) in.push_back(i);
+    const std::vector<int> in =
+        inliersOnRays(p, q, covP, covQ, m, params_.ray_gate_sigmas, r.inliers);
     return in.size() >= 3 && in.size() < r.inliers.size()
                ? refineOnRays(p, q, covP, covQ, m, in)
                : m;

@@ -17,6 +17,12 @@ inline Eigen::Vector3d backProject(const cv::Point2f& pixel, double z,
   return {(pixel.x - k.cx) * z / k.fx, (pixel.y - k.cy) * z / k.fy, z};
 }
 
+/// The pixel of a camera-frame point (pinhole; the inverse of backProject). The point must lie
+/// in front of the camera (z > 0): the callers check it.
+inline Eigen::Vector2d project(const Eigen::Vector3d& P, const core::CameraIntrinsics& k) {
+  return {k.fx * P.x() / P.z() + k.cx, k.fy * P.y() / P.z() + k.cy};
+}
+
 /// F of Eq. 11; T_cur_prev maps previous-camera coordinates to this frame's camera coordinates.
 inline Eigen::Vector3d sceneFlow(const Eigen::Vector3d& P_prev, const Eigen::Vector3d& P_cur,
                                  const Eigen::Isometry3d& T_cur_prev) {
