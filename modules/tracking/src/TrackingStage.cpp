@@ -34,6 +34,8 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.appearance_memory, "appearance_memory");
   TRACKING_READ(double, t.reid_memory, "reid_memory");
   TRACKING_READ(double, t.reid_at_track_depth, "reid_at_track_depth");
+  t.descriptor_own_surface =
+      core::readBool(c, s, "descriptor_own_surface", t.descriptor_own_surface);
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
@@ -72,6 +74,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   TRACKING_WRITE(t.reid_at_track_depth, "reid_at_track_depth",
                  "0 = off; with reid: a coasting track also takes a detection given another's "
                  "surface whose colours at the track's depth are closer than this (not the method)");
+  TRACKING_WRITE(t.descriptor_own_surface, "descriptor_own_surface",
+                 "with reid: a track's colours only from detections on their own surface, not "
+                 "another detection's or recent track's (not the method)");
   TRACKING_WRITE(t.alternative_depth, "alternative_depth",
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "

@@ -71,9 +71,9 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "ratio_walk",      "init_rate_center_px", "init_rate_area_rel",
                           "init_rate_depth", "reid_memory",         "alternative_depth",
                           "depth_gate",      "depth_gate_frames",   "innovation_gate",
-                          "reid_at_track_depth"})
+                          "reid_at_track_depth", "descriptor_own_surface"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 25u);
+  EXPECT_EQ(keys.size(), 26u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
