@@ -185,7 +185,7 @@ void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations
 }
 
 std::vector<char> KalmanBoxTracker::onOthersSurface(const std::vector<BoxObservation>& observations,
-                                                   const std::vector<int>& observationOf) const {
+                                                    const std::vector<int>& observationOf) const {
   // A track coasting longer has a drifting prediction, and the person it lost is the likeliest
   // one standing there (bench-tracking, segmentation depth, 24 seeds: IDF1 0.780 with every
   // track against 0.802 with these).

@@ -71,9 +71,10 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "weight of a track's colour histogram against a new detection's");
   TRACKING_WRITE(t.reid_memory, "reid_memory",
                  "s; with reid: a new track takes a lost or coasting track's id by colour");
-  TRACKING_WRITE(t.reid_at_track_depth, "reid_at_track_depth",
-                 "0 = off; with reid: a coasting track also takes a detection given another's "
-                 "surface whose colours at the track's depth are closer than this (not the method)");
+  TRACKING_WRITE(
+      t.reid_at_track_depth, "reid_at_track_depth",
+      "0 = off; with reid: a coasting track also takes a detection given another's "
+      "surface whose colours at the track's depth are closer than this (not the method)");
   TRACKING_WRITE(t.descriptor_own_surface, "descriptor_own_surface",
                  "with reid: a track's colours only from detections on their own surface, not "
                  "another detection's or recent track's (not the method)");
@@ -126,10 +127,11 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
     throw core::ConfigError("[" + section +
                             "] depth_gate_frames = " + std::to_string(t.depth_gate_frames) +
                             " in " + cfg.source() + ": must be >= 0");
-  const std::pair<double, const char*> unitInterval[] = {{t.reid_max_distance, "reid_max_distance"},
-                                                         {t.appearance_memory, "appearance_memory"},
-                                                         {t.depth_gate, "depth_gate"},
-                                                         {t.reid_at_track_depth, "reid_at_track_depth"}};
+  const std::pair<double, const char*> unitInterval[] = {
+      {t.reid_max_distance, "reid_max_distance"},
+      {t.appearance_memory, "appearance_memory"},
+      {t.depth_gate, "depth_gate"},
+      {t.reid_at_track_depth, "reid_at_track_depth"}};
   for (const auto& [value, key] : unitInterval)
     if (!(value >= 0 && value <= 1))
       throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +

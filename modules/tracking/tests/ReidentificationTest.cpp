@@ -36,7 +36,8 @@ TEST(TrackingAppearance, BodyHistogramTellsShirtsAndTrousersApart) {
   EXPECT_NEAR(appearanceDistance(a, a), 0.0, 1e-6);
   cv::Mat redGreen = redBlue.clone();  // same shirt, other trousers
   redGreen(cv::Rect(0, 110, 100, 90)).setTo(cv::Scalar(0, 200, 0));
-  const double trousers = appearanceDistance(a, bodyHistogram(redGreen, cv::Rect2f(0, 0, 100, 200)));
+  const double trousers =
+      appearanceDistance(a, bodyHistogram(redGreen, cv::Rect2f(0, 0, 100, 200)));
   EXPECT_GT(trousers, 0.5) << "the legs count as half";
   EXPECT_LT(trousers, 0.9);
   cv::Mat green(200, 100, CV_8UC3, cv::Scalar(0, 200, 0));
@@ -52,8 +53,8 @@ TEST(TrackingAppearance, DepthBandLeavesTheOccluderOut) {
   cv::Mat depth(200, 100, CV_32FC1, cv::Scalar(3.0f));
   image(cv::Rect(0, 0, 50, 200)).setTo(cv::Scalar(0, 200, 0));
   depth(cv::Rect(0, 0, 50, 200)).setTo(cv::Scalar(1.5f));
-  const cv::Mat red = bodyHistogram(cv::Mat(200, 100, CV_8UC3, cv::Scalar(0, 0, 200)),
-                                    cv::Rect2f(0, 0, 100, 200));
+  const cv::Mat red =
+      bodyHistogram(cv::Mat(200, 100, CV_8UC3, cv::Scalar(0, 0, 200)), cv::Rect2f(0, 0, 100, 200));
   const cv::Rect2f box(0, 0, 100, 200);
   EXPECT_LT(appearanceDistance(red, bodyHistogram(image, box, depth, 3.0)), 1e-6);
   EXPECT_GT(appearanceDistance(red, bodyHistogram(image, box)), 0.5) << "without the band";
@@ -62,9 +63,10 @@ TEST(TrackingAppearance, DepthBandLeavesTheOccluderOut) {
 
 // A red person 3 m away, hidden for 20 frames, steps out from behind a green one 1.5 m away and
 // is given the green one's depth (the segmentation took the occluder's surface, which the
-// occluder's own detection has): its descriptor shows green and its depth is off by a factor 2. With reid_at_track_depth the coasting track
-// looks at the box at its own depth, finds red there and takes the detection; without, a new
-// track starts. A green person at 1.5 m with nothing red behind it is not taken either way.
+// occluder's own detection has): its descriptor shows green and its depth is off by a factor 2.
+// With reid_at_track_depth the coasting track looks at the box at its own depth, finds red there
+// and takes the detection; without, a new track starts. A green person at 1.5 m with nothing red
+// behind it is not taken either way.
 TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGivenTheOccludersDepth) {
   cv::Mat image(480, 640, CV_8UC3, cv::Scalar(0, 0, 200));
   cv::Mat depth(480, 640, CV_32FC1, cv::Scalar(3.0f));
@@ -77,8 +79,8 @@ TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGiven
     params.reid_max_distance = 0.4;
     params.reid_at_track_depth = atTrackDepth;
     KalmanBoxTracker tracker(params);
-    const cv::Mat red = bodyHistogram(cv::Mat(480, 640, CV_8UC3, cv::Scalar(0, 0, 200)),
-                                      cv::Rect2f(0, 0, 60, 180));
+    const cv::Mat red =
+        bodyHistogram(cv::Mat(480, 640, CV_8UC3, cv::Scalar(0, 0, 200)), cv::Rect2f(0, 0, 60, 180));
     int k = 0;
     for (; k < 10; ++k) {
       BoxObservation o = person(100 + 10.f * k, 100, 60, 180, 3.0);
@@ -158,7 +160,8 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryGivesAReturningPersonItsId) {
     int id = -1;
     for (int n = 0; n < 4; ++n, ++k) {
       const float x = 640 - 60 - 10.f * n;
-      for (const auto& t : step(tracker, k, {dressed(person(x, 100, 60, 180, 3.0), returningColour)}))
+      for (const auto& t :
+           step(tracker, k, {dressed(person(x, 100, 60, 180, 3.0), returningColour)}))
         if (t.detection == 0 && t.state == core::TrackState::Confirmed) id = t.id;
     }
     return std::make_pair(id, tracker.tracksRevived());

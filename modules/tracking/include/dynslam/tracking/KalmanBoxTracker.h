@@ -183,9 +183,9 @@ class KalmanBoxTracker {
   struct Tracked {
     core::Track track;  // id, state, category, model, detection, hits, misses
     KalmanBoxFilter filter;
-    cv::Mat appearance = {};  // running average of the matched detections' descriptors
-    int depth_gated = 0;      // frames in a row the depth gate held the depth (depth_gate)
-    double last_depth = 0;    // m; the last measured depth the track took (depth_gate)
+    cv::Mat appearance = {};       // running average of the matched detections' descriptors
+    int depth_gated = 0;           // frames in a row the depth gate held the depth (depth_gate)
+    double last_depth = 0;         // m; the last measured depth the track took (depth_gate)
     bool revival_pending = false;  // confirmed without a descriptor: reid_memory waits for one
   };
 
@@ -227,8 +227,7 @@ class KalmanBoxTracker {
   /// The appearance distance of a track's descriptor `a` (the track at `depth`) to observation
   /// `o`: to o's own descriptor, or with reid_at_track_depth the smaller of that and the one to
   /// o's colours at `depth`; `atDepth` tells whether the latter decided.
-  double reidDistance(const cv::Mat& a, double depth, const BoxObservation& o,
-                      bool& atDepth) const;
+  double reidDistance(const cv::Mat& a, double depth, const BoxObservation& o, bool& atDepth) const;
   bool remembers() const { return params_.reid_memory > 0 && params_.reid_max_distance > 0; }
   /// True when the unmatched track `t` is to be dropped now.
   bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
