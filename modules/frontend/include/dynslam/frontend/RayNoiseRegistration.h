@@ -41,9 +41,10 @@ RigidMotion refineOnRays(const std::vector<Eigen::Vector3d>& p,
                          const std::vector<int>& indices = {}, const RayNoiseRefinement& opts = {});
 
 /// The indices i among `indices` (all pairs when empty; kept in their order) whose residual lies
-/// within `gateSigmas` of its own noise: r_i^T (Sigma_q,i + R Sigma_p,i R^T)^-1 r_i < gateSigmas^2. Across the rays sigma is the pixel's,
-/// so a track that slid a few pixels off a body (a swinging arm beside a torso, a corner on a
-/// silhouette) fails where an isotropic gate of the depth noise (centimetres) admits it.
+/// within `gateSigmas` of its own noise: r_i^T (Sigma_q,i + R Sigma_p,i R^T)^-1 r_i <
+/// gateSigmas^2. Across the rays sigma is the pixel's, so a track that slid a few pixels off a
+/// body (a swinging arm beside a torso, a corner on a silhouette) fails where an isotropic gate
+/// of the depth noise (centimetres) admits it.
 std::vector<int> inliersOnRays(const std::vector<Eigen::Vector3d>& p,
                                const std::vector<Eigen::Vector3d>& q,
                                const std::vector<Eigen::Matrix3d>& covP,

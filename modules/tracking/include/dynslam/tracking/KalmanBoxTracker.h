@@ -209,16 +209,20 @@ class KalmanBoxTracker {
   double centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
                            const cv::Rect2f& box) const;
   void startTrack(const BoxObservation& observation, int index);
-  /// reid_max_distance > 0: the appearance round for coasting tracks (see there).
-  void reidentify(const std::vector<BoxObservation>& observations, std::vector<int>& observationOf,
+  /// reid_max_distance > 0: the appearance round for coasting tracks (see there);
+  /// `onAnothersSurface`: givenAnothersSurface per observation (read with reid_at_track_depth).
+  void reidentify(const std::vector<BoxObservation>& observations,
+                  const std::vector<char>& onAnothersSurface, std::vector<int>& observationOf,
                   std::vector<char>& observationUsed) const;
   /// reset_at_border: restarts what the image border cut from the measurement (see there).
   void restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box, const BoxMeasurement& z,
                             const cv::Size& image) const;
   /// descriptor_own_surface: per observation, whether its depth is the surface of another
-  /// observation or of another recent track (see there), given the association so far.
+  /// observation (`onAnothersSurface`, givenAnothersSurface per observation) or of another
+  /// recent track (see there), given the association so far.
   std::vector<char> onOthersSurface(const std::vector<BoxObservation>& observations,
-                                    const std::vector<int>& observationOf) const;
+                                    const std::vector<int>& observationOf,
+                                    std::vector<char> onAnothersSurface) const;
   /// reid_memory: tracked_[index] (just confirmed, or confirmed before and given its first
   /// descriptor now) takes the id of the remembered or coasting track of closest appearance,
   /// when close enough; that one is forgotten (a coasting one is
