@@ -54,7 +54,31 @@ struct TrackerRun {
   int tracks_started = 0;
   double objects_per_frame = 0;
   std::vector<evaluation::MotFrame> frames;  // what was scored
+  /// Per TrackMatch: observations taken that way, and of those the ones of another person than
+  /// the track's id took last (a switch).
+  std::map<tracking::TrackMatch, std::pair<int, int>> takenBy;
+  std::vector<std::string> switchEvents;  // "frame 101: #5 t3 -> t4 (depth IoU)"
 };
+
+const char* matchName(tracking::TrackMatch m) {
+  switch (m) {
+    case tracking::TrackMatch::Overlap:
+      return "depth IoU";
+    case tracking::TrackMatch::CoastingOverlap:
+      return "coasting IoU";
+    case tracking::TrackMatch::Appearance:
+      return "appearance";
+    case tracking::TrackMatch::Started:
+      return "new track";
+    case tracking::TrackMatch::Revived:
+      return "revival";
+    case tracking::TrackMatch::Swapped:
+      return "id swap";
+    case tracking::TrackMatch::None:
+      break;
+  }
+  return "none";
+}
 
 /// |d - d_true| / d_true of every observation of a true object.
 std::vector<double> depthErrors(const CachedRun& run) {
@@ -71,7 +95,8 @@ std::vector<double> depthErrors(const CachedRun& run) {
 /// --trace: frame i's observations (truth id, box centre and size, d, d_alt, true depth) and the
 /// tracks after the update (id, state, misses, the truth id of the observation taken, box centre
 /// and size, filter depth).
-void printTrace(size_t i, const bench::CachedFrame& f, const std::vector<core::Track>& tracks) {
+void printTrace(size_t i, const bench::CachedFrame& f, const std::vector<core::Track>& tracks,
+                const std::vector<tracking::TrackMatch>& matches) {
   std::printf("frame %zu  obs:", i);
   for (size_t k = 0; k < f.observations.size(); ++k) {
     const auto& o = f.observations[k];
@@ -81,16 +106,39 @@ void printTrace(size_t i, const bench::CachedFrame& f, const std::vector<core::T
                 truth.depth, truth.visible);
   }
   std::printf("\n           tracks:");
-  for (const auto& t : tracks) {
+  for (size_t k = 0; k < tracks.size(); ++k) {
+    const core::Track& t = tracks[k];
     const char state = t.state == core::TrackState::Confirmed   ? 'C'
                        : t.state == core::TrackState::Tentative ? 'T'
                                                                 : 'L';
     const std::string taken =
         t.detection >= 0 ? "t" + std::to_string(f.observation_truth[t.detection].id) : "-";
-    std::printf(" [#%d %c%d %s x%.0f %.0fx%.0f d%.2f]", t.id, state, t.misses, taken.c_str(),
-                t.box.x + t.box.width / 2, t.box.width, t.box.height, t.depth);
+    std::printf(" [#%d %c%d %s(%s) x%.0f %.0fx%.0f d%.2f]", t.id, state, t.misses, taken.c_str(),
+                matchName(matches[k]), t.box.x + t.box.width / 2, t.box.width, t.box.height,
+                t.depth);
   }
   std::printf("\n");
+}
+
+/// Counts, per TrackMatch, the observations the tracks took on frame i and the switches among
+/// them (a track taking another person than it took last, `lastTruthOf`: track id -> truth id).
+void tallySwitches(int i, const bench::CachedFrame& f, const std::vector<core::Track>& tracks,
+                   const std::vector<tracking::TrackMatch>& matches,
+                   std::map<int, int>& lastTruthOf, TrackerRun& r) {
+  for (size_t k = 0; k < tracks.size(); ++k) {
+    if (tracks[k].detection < 0) continue;
+    const int truth = f.observation_truth[tracks[k].detection].id;
+    auto& [taken, switched] = r.takenBy[matches[k]];
+    ++taken;
+    const auto last = lastTruthOf.find(tracks[k].id);
+    if (last != lastTruthOf.end() && truth >= 0 && last->second >= 0 && last->second != truth) {
+      ++switched;
+      r.switchEvents.push_back("frame " + std::to_string(i) + ": #" + std::to_string(tracks[k].id) +
+                               " t" + std::to_string(last->second) + " -> t" +
+                               std::to_string(truth) + " (" + matchName(matches[k]) + ")");
+    }
+    lastTruthOf[tracks[k].id] = truth;
+  }
 }
 
 TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerParams& params,
@@ -100,6 +148,7 @@ TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerPara
   std::vector<evaluation::MotFrame> mot;
   size_t observations = 0;
   const cv::Rect2d image(0, 0, run.image.width, run.image.height);
+  std::map<int, int> lastTruthOf;  // track id -> truth id of the last observation it took
   for (const auto& f : run.frames) {
     const auto t0 = std::chrono::steady_clock::now();
     tracker.predict(f.t);
@@ -109,7 +158,9 @@ TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerPara
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     observations += f.observations.size();
     const int i = int(mot.size());
-    if (i >= traceFirst && i <= traceLast) printTrace(size_t(i), f, tracks);
+    const std::vector<tracking::TrackMatch> matches = tracker.matches();
+    if (i >= traceFirst && i <= traceLast) printTrace(size_t(i), f, tracks, matches);
+    tallySwitches(i, f, tracks, matches, lastTruthOf, r);
     evaluation::MotFrame m;
     m.truth = f.truth;
     for (const auto& t : tracks)
@@ -325,7 +376,14 @@ void benchSimulation(const BenchSettings& s) {
       med, percentile(main.ms, 0.9), main.objects_per_frame, med / 0.2);
   std::printf("(render, detect and segment: %.1f s)\n", prepSeconds);
   printAppearanceSeparation(run);
-  if (s.identities) printIdentities(main.frames);
+  if (s.identities) {
+    printIdentities(main.frames);
+    std::printf("\nswitches by round (a track taking another person than it took last):\n");
+    for (const auto& [match, counts] : main.takenBy)
+      std::printf("  %-13s %6d observations taken, %4d switches\n", matchName(match), counts.first,
+                  counts.second);
+    for (const auto& e : main.switchEvents) std::printf("  %s\n", e.c_str());
+  }
   if (s.sweep.empty()) return;
   // "Tracking.key=v1,v2,...": one run per value, the other settings as above.
   const size_t eq = s.sweep.find('=');

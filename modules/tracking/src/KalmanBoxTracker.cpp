@@ -21,6 +21,7 @@ void KalmanBoxTracker::predict(double t) {
   }
   for (auto& tr : tracked_) {
     tr.track.detection = -1;
+    tr.match = TrackMatch::None;
     if (dt <= 0) continue;
     const BoxState& x = tr.filter.state();
     // While coasting the box keeps its size and depth: over more than a few frames a linear
@@ -211,14 +212,55 @@ std::vector<char> KalmanBoxTracker::onOthersSurface(const std::vector<BoxObserva
   return others;
 }
 
+void KalmanBoxTracker::updateIdentity(Tracked& tr, const cv::Mat& descriptor) const {
+  // Views of one person one frame apart: Bhattacharyya distance median 0.11, p90 0.21-0.26
+  // (bench-tracking's "appearance" line); a view farther than this is someone else's or an
+  // occluded one, and leaves the identity as it was.
+  constexpr double kConsistent = 0.35;
+  // The identity follows slow changes of a person's colours (turning, lighting) over tens of
+  // frames; the running descriptor (appearance_memory 0.8) over a few.
+  constexpr double kIdentityMemory = 0.95;
+  if (tr.identity.empty())
+    tr.identity = descriptor.clone();
+  else if (appearanceDistance(tr.identity, descriptor) < kConsistent)
+    tr.identity = kIdentityMemory * tr.identity + (1 - kIdentityMemory) * descriptor;
+}
+
+void KalmanBoxTracker::checkIdentities() {
+  for (size_t a = 0; a < tracked_.size(); ++a)
+    for (size_t b = a + 1; b < tracked_.size(); ++b) {
+      Tracked& A = tracked_[a];
+      Tracked& B = tracked_[b];
+      if (!A.described_now || !B.described_now || A.identity.empty() || B.identity.empty() ||
+          A.track.state != core::TrackState::Confirmed ||
+          B.track.state != core::TrackState::Confirmed || A.track.category != B.track.category)
+        continue;
+      const double kept = appearanceDistance(A.identity, A.appearance) +
+                          appearanceDistance(B.identity, B.appearance);
+      const double swapped = appearanceDistance(A.identity, B.appearance) +
+                             appearanceDistance(B.identity, A.appearance);
+      if (!(swapped + params_.identity_check < kept)) continue;
+      std::swap(A.track.id, B.track.id);
+      std::swap(A.identity, B.identity);
+      A.match = B.match = TrackMatch::Swapped;
+      ++swapped_;
+    }
+}
+
 void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv::Size& image) {
   const std::vector<BoxObservation> observations =
       params_.alternative_depth ? withOwnedAlternatives(input) : input;
   std::vector<int> observationOf(tracked_.size(), -1);
   std::vector<char> observationUsed(observations.size(), 0);
+  for (auto& tr : tracked_) {
+    tr.match = TrackMatch::None;
+    tr.described_now = false;
+  }
   associate(observations, image, params_.rho_min, false, observationOf, observationUsed);
+  noteRound(observationOf, TrackMatch::Overlap);
   if (params_.rho_min_coasting < params_.rho_min)
     associate(observations, image, params_.rho_min_coasting, true, observationOf, observationUsed);
+  noteRound(observationOf, TrackMatch::CoastingOverlap);
   // givenAnothersSurface, for the keys that read it.
   std::vector<char> anothers(observations.size(), 0);
   if (params_.reid_at_track_depth > 0 || params_.descriptor_own_surface)
@@ -226,6 +268,7 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
       anothers[j] = givenAnothersSurface(observations, j);
   if (params_.reid_max_distance > 0)
     reidentify(observations, anothers, observationOf, observationUsed);
+  noteRound(observationOf, TrackMatch::Appearance);
   const std::vector<char> othersSurface =
       params_.descriptor_own_surface ? onOthersSurface(observations, observationOf, anothers)
                                      : std::vector<char>(observations.size(), 0);
@@ -244,10 +287,13 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
       if (params_.reset_at_border) restartCutComponents(tr.filter, o.box, z, image);
       tr.track.detection = j;
       if (!o.appearance.empty() && !othersSurface[j] &&
-          (tr.appearance.empty() || !occluded(observations, j)))
+          (tr.appearance.empty() || !occluded(observations, j))) {
         tr.appearance = tr.appearance.empty() ? o.appearance.clone()
                                               : params_.appearance_memory * tr.appearance +
                                                     (1 - params_.appearance_memory) * o.appearance;
+        tr.described_now = true;
+        if (params_.identity_check > 0) updateIdentity(tr, o.appearance);
+      }
       ++tr.track.hits;
       tr.track.misses = 0;
       const bool confirmedNow =
@@ -271,6 +317,7 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
     kept.push_back(std::move(tr));
   }
   tracked_ = std::move(kept);
+  if (params_.identity_check > 0) checkIdentities();
   if (remembers()) {
     remembered_.erase(std::remove_if(remembered_.begin(), remembered_.end(),
                                      [&](const Remembered& r) {
@@ -371,6 +418,7 @@ void KalmanBoxTracker::reviveIdentity(size_t index) {
   } else {
     return;
   }
+  t.match = TrackMatch::Revived;
   ++revived_;
 }
 
@@ -393,7 +441,20 @@ void KalmanBoxTracker::startTrack(const BoxObservation& observation, int index) 
   t.track.model = observation.model;
   t.track.detection = index;
   t.track.hits = 1;
+  t.match = TrackMatch::Started;
   tracked_.push_back(std::move(t));
+}
+
+void KalmanBoxTracker::noteRound(const std::vector<int>& observationOf, TrackMatch round) {
+  for (size_t i = 0; i < tracked_.size(); ++i)
+    if (observationOf[i] >= 0 && tracked_[i].match == TrackMatch::None) tracked_[i].match = round;
+}
+
+std::vector<TrackMatch> KalmanBoxTracker::matches() const {
+  std::vector<TrackMatch> out;
+  out.reserve(tracked_.size());
+  for (const auto& tr : tracked_) out.push_back(tr.match);
+  return out;
 }
 
 std::vector<core::Track> KalmanBoxTracker::tracks() const {

@@ -36,6 +36,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.reid_at_track_depth, "reid_at_track_depth");
   t.descriptor_own_surface =
       core::readBool(c, s, "descriptor_own_surface", t.descriptor_own_surface);
+  TRACKING_READ(double, t.identity_check, "identity_check");
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
@@ -78,6 +79,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   TRACKING_WRITE(t.descriptor_own_surface, "descriptor_own_surface",
                  "with reid: a track's colours only from detections on their own surface, not "
                  "another detection's or recent track's (not the method)");
+  TRACKING_WRITE(t.identity_check, "identity_check",
+                 "0 = off; with reid: two tracks whose recent colours each match the other's "
+                 "slow identity descriptor better by more than this swap ids (not the method)");
   TRACKING_WRITE(t.alternative_depth, "alternative_depth",
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "
@@ -136,6 +140,10 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
     if (!(value >= 0 && value <= 1))
       throw core::ConfigError("[" + section + "] " + key + " = " + std::to_string(value) + " in " +
                               cfg.source() + ": must be in [0, 1]");
+  if (!(t.identity_check >= 0 && t.identity_check <= 2))
+    throw core::ConfigError("[" + section +
+                            "] identity_check = " + std::to_string(t.identity_check) + " in " +
+                            cfg.source() + ": must be in [0, 2] (a sum of two distances; 0: off)");
   if (!(t.innovation_gate >= 0))
     throw core::ConfigError("[" + section +
                             "] innovation_gate = " + std::to_string(t.innovation_gate) + " in " +
@@ -188,7 +196,9 @@ void TrackingStage::process(core::Frame& frame) {
 void TrackingStage::finish() {
   MRPT_LOG_INFO_STREAM(frames_ << " frames (" << detectorFrames_ << " with fresh detections), "
                                << tracker_.tracksStarted() << " tracks started, "
-                               << tracker_.tracksLost() << " lost");
+                               << tracker_.tracksLost() << " lost, " << tracker_.tracksRevived()
+                               << " revived, " << tracker_.identitiesSwapped()
+                               << " pairs of ids swapped back");
 }
 
 }  // namespace dynslam::tracking

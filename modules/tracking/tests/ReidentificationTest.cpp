@@ -247,3 +247,33 @@ TEST(TrackingKalmanBoxTracker, DescriptorsOnAnotherTracksSurfaceAreNotTaken) {
   EXPECT_EQ(run(true).first, 1) << "the near person keeps its id";
   EXPECT_NE(run(true).second, 1);
 }
+
+// Two people of different colours (3 and 9) at one depth, 200 px apart; on frame 10 the
+// association gives each track the other's person (here the people change places in one frame,
+// as the boxes do at a crossing the depth IoU gets wrong). Each track's running descriptor then
+// turns to the other's colours while its identity descriptor stays: with identity_check the ids
+// go back to the people within a few frames.
+TEST(TrackingKalmanBoxTracker, IdentityCheckSwapsIdsBackAfterAnAssociationSwappedThem) {
+  auto idOfColour3 = [](double identityCheck) {
+    KalmanBoxTrackerParams params;
+    params.reid_max_distance = 0.4;
+    params.identity_check = identityCheck;
+    KalmanBoxTracker tracker(params);
+    int k = 0;
+    std::vector<core::Track> tracks;
+    for (; k < 10; ++k)
+      step(
+          tracker, k,
+          {dressed(person(200, 100, 60, 180, 3.0), 3), dressed(person(400, 100, 60, 180, 3.0), 9)});
+    for (; k < 20; ++k)
+      tracks = step(
+          tracker, k,
+          {dressed(person(200, 100, 60, 180, 3.0), 9), dressed(person(400, 100, 60, 180, 3.0), 3)});
+    for (const auto& t : tracks)
+      if (t.detection == 1) return std::make_pair(t.id, tracker.identitiesSwapped());
+    return std::make_pair(-1, tracker.identitiesSwapped());
+  };
+  ASSERT_EQ(idOfColour3(0.0).first, 2) << "without: the ids stay with the boxes";
+  EXPECT_EQ(idOfColour3(0.1).first, 1) << "colour 3 was track 1";
+  EXPECT_EQ(idOfColour3(0.1).second, 1) << "swapped once, not back and forth";
+}

@@ -64,16 +64,32 @@ TEST(TrackingStage, RegisteredAndConfiguredFromItsSection) {
 
 TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   const auto keys = core::knownKeys(TrackingOptions());
-  for (const char* key : {"rho_min",         "rho_min_coasting",    "max_age",
-                          "min_hits",        "reset_at_border",     "meas_center_px",
-                          "meas_area_rel",   "meas_depth_rel",      "meas_ratio",
-                          "accel_center_px", "accel_area_rel",      "accel_depth",
-                          "ratio_walk",      "init_rate_center_px", "init_rate_area_rel",
-                          "init_rate_depth", "reid_memory",         "alternative_depth",
-                          "depth_gate",      "depth_gate_frames",   "innovation_gate",
-                          "reid_at_track_depth", "descriptor_own_surface"})
+  for (const char* key : {"rho_min",
+                          "rho_min_coasting",
+                          "max_age",
+                          "min_hits",
+                          "reset_at_border",
+                          "meas_center_px",
+                          "meas_area_rel",
+                          "meas_depth_rel",
+                          "meas_ratio",
+                          "accel_center_px",
+                          "accel_area_rel",
+                          "accel_depth",
+                          "ratio_walk",
+                          "init_rate_center_px",
+                          "init_rate_area_rel",
+                          "init_rate_depth",
+                          "reid_memory",
+                          "alternative_depth",
+                          "depth_gate",
+                          "depth_gate_frames",
+                          "innovation_gate",
+                          "reid_at_track_depth",
+                          "descriptor_own_surface",
+                          "identity_check"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 26u);
+  EXPECT_EQ(keys.size(), 27u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
