@@ -137,7 +137,7 @@ struct KalmanBoxTrackerParams {
   /// frames, shows the swap. Without it a swap lasted until the next crossing: one on
   /// bench-tracking's seed 6 (segmentation depth) held two people on each other's tracks for
   /// 370 frames. bench-tracking, 24 seeds, 0.1: IDF1 with the segmentation's depth 0.802 ->
-  /// 0.830, with true depth 0.8995 -> 0.903.
+  /// 0.828, with true depth 0.8995 -> 0.903.
   double identity_check = 0.0;
   /// Weight of the track's descriptor when a matched detection updates it (running average).
   double appearance_memory = 0.8;
