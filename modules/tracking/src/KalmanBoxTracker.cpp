@@ -227,21 +227,25 @@ void KalmanBoxTracker::updateIdentity(Tracked& tr, const cv::Mat& descriptor) co
 }
 
 void KalmanBoxTracker::checkIdentities() {
+  // Each candidate's distance of its view to its own identity, once: it enters every pair.
+  std::vector<double> own(tracked_.size(), -1.0);  // < 0: not a candidate
+  for (size_t i = 0; i < tracked_.size(); ++i) {
+    const Tracked& t = tracked_[i];
+    if (t.described_now && !t.identity.empty() && t.track.state == core::TrackState::Confirmed)
+      own[i] = appearanceDistance(t.identity, t.appearance);
+  }
   for (size_t a = 0; a < tracked_.size(); ++a)
     for (size_t b = a + 1; b < tracked_.size(); ++b) {
       Tracked& A = tracked_[a];
       Tracked& B = tracked_[b];
-      if (!A.described_now || !B.described_now || A.identity.empty() || B.identity.empty() ||
-          A.track.state != core::TrackState::Confirmed ||
-          B.track.state != core::TrackState::Confirmed || A.track.category != B.track.category)
-        continue;
-      const double kept = appearanceDistance(A.identity, A.appearance) +
-                          appearanceDistance(B.identity, B.appearance);
-      const double swapped = appearanceDistance(A.identity, B.appearance) +
-                             appearanceDistance(B.identity, A.appearance);
-      if (!(swapped + params_.identity_check < kept)) continue;
+      if (own[a] < 0 || own[b] < 0 || A.track.category != B.track.category) continue;
+      const double aAsB = appearanceDistance(B.identity, A.appearance);
+      const double bAsA = appearanceDistance(A.identity, B.appearance);
+      if (!(aAsB + bAsA + params_.identity_check < own[a] + own[b])) continue;
       std::swap(A.track.id, B.track.id);
       std::swap(A.identity, B.identity);
+      own[a] = aAsB;  // each view against the identity it has now, for the pairs still to come
+      own[b] = bAsA;
       A.match = B.match = TrackMatch::Swapped;
       ++swapped_;
     }
