@@ -74,6 +74,8 @@ const char* matchName(tracking::TrackMatch m) {
       return "revival";
     case tracking::TrackMatch::Swapped:
       return "id swap";
+    case tracking::TrackMatch::Repaired:
+      return "id repair";
     case tracking::TrackMatch::None:
       break;
   }

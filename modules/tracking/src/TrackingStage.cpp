@@ -37,6 +37,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   t.descriptor_own_surface =
       core::readBool(c, s, "descriptor_own_surface", t.descriptor_own_surface);
   TRACKING_READ(double, t.identity_check, "identity_check");
+  TRACKING_READ(int, t.identity_repair, "identity_repair");
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
@@ -82,6 +83,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   TRACKING_WRITE(t.identity_check, "identity_check",
                  "0 = off; with reid: two tracks whose recent colours each match the other's "
                  "slow identity descriptor better by more than this swap ids (not the method)");
+  TRACKING_WRITE(t.identity_repair, "identity_repair",
+                 "0 = off; with identity_check: a track this many views in a row off its "
+                 "identity takes a lost or coasting id whose identity it matches (not the method)");
   TRACKING_WRITE(t.alternative_depth, "alternative_depth",
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "
@@ -127,6 +131,10 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
   if (t.min_hits < 1)
     throw core::ConfigError("[" + section + "] min_hits = " + std::to_string(t.min_hits) + " in " +
                             cfg.source() + ": must be >= 1");
+  if (t.identity_repair < 0)
+    throw core::ConfigError("[" + section +
+                            "] identity_repair = " + std::to_string(t.identity_repair) + " in " +
+                            cfg.source() + ": must be >= 0 (views; 0: off)");
   if (t.depth_gate_frames < 0)
     throw core::ConfigError("[" + section +
                             "] depth_gate_frames = " + std::to_string(t.depth_gate_frames) +
@@ -198,7 +206,8 @@ void TrackingStage::finish() {
                                << tracker_.tracksStarted() << " tracks started, "
                                << tracker_.tracksLost() << " lost, " << tracker_.tracksRevived()
                                << " revived, " << tracker_.identitiesSwapped()
-                               << " pairs of ids swapped back");
+                               << " pairs of ids swapped back, " << tracker_.identitiesRepaired()
+                               << " ids repaired");
 }
 
 }  // namespace dynslam::tracking

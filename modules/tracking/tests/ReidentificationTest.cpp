@@ -277,3 +277,35 @@ TEST(TrackingKalmanBoxTracker, IdentityCheckSwapsIdsBackAfterAnAssociationSwappe
   EXPECT_EQ(idOfColour3(0.1).first, 1) << "colour 3 was track 1";
   EXPECT_EQ(idOfColour3(0.1).second, 1) << "swapped once, not back and forth";
 }
+
+// Two people of different colours (3 and 9); the one in colour 9 (track 2) goes out of sight and
+// its track is lost and remembered; from frame 15 the association gives track 1 that person
+// where the person in colour 3 was (track 1's person left unseen, as when a swap lands a track
+// on a person whose own track was lost). The pair check has nothing to compare with: with
+// identity_repair, after that many views off its identity track 1 takes the lost id whose
+// identity its views match. A colour nobody had leaves the id alone.
+TEST(TrackingKalmanBoxTracker, IdentityRepairGivesATrackTheLostIdOfThePersonItFollows) {
+  auto idAfter = [](int repair, int newColour) {
+    KalmanBoxTrackerParams params;
+    params.reid_max_distance = 0.4;
+    params.reid_memory = 10;
+    params.identity_check = 0.1;
+    params.identity_repair = repair;
+    params.max_age = 3;
+    KalmanBoxTracker tracker(params);
+    int k = 0;
+    for (; k < 10; ++k)
+      step(
+          tracker, k,
+          {dressed(person(200, 100, 60, 180, 3.0), 3), dressed(person(400, 100, 60, 180, 3.0), 9)});
+    for (; k < 15; ++k) step(tracker, k, {dressed(person(200, 100, 60, 180, 3.0), 3)});
+    std::vector<core::Track> tracks;
+    for (; k < 30; ++k)
+      tracks = step(tracker, k, {dressed(person(200, 100, 60, 180, 3.0), newColour)});
+    return tracks.size() == 1 ? std::make_pair(tracks[0].id, tracker.identitiesRepaired())
+                              : std::make_pair(-1, -1);
+  };
+  ASSERT_EQ(idAfter(0, 9).first, 1) << "without: the track keeps the id it had";
+  EXPECT_EQ(idAfter(5, 9), std::make_pair(2, 1)) << "colour 9's id, given once";
+  EXPECT_EQ(idAfter(5, 20).first, 1) << "a colour no lost track had";
+}

@@ -87,9 +87,10 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "innovation_gate",
                           "reid_at_track_depth",
                           "descriptor_own_surface",
-                          "identity_check"})
+                          "identity_check",
+                          "identity_repair"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 27u);
+  EXPECT_EQ(keys.size(), 28u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
@@ -97,6 +98,8 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   EXPECT_NE(errorOf("[Tracking]\nmin_hits = 0\n").find("min_hits"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nratio_walk = 0\n").find("ratio_walk"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nreid_memory = -1\n").find("reid_memory"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nidentity_repair = -1\n").find("identity_repair"),
+            std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 1.5\n").find("depth_gate"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate_frames = -1\n").find("depth_gate_frames"),
             std::string::npos);
