@@ -85,7 +85,7 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "slow identity descriptor better by more than this swap ids (not the method)");
   TRACKING_WRITE(t.identity_repair, "identity_repair",
                  "0 = off; with identity_check: a track this many views in a row off its "
-                 "identity takes a lost or coasting id whose identity it matches (not the method)");
+                 "identity takes the lost id whose identity it matches (not the method)");
   TRACKING_WRITE(t.alternative_depth, "alternative_depth",
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "

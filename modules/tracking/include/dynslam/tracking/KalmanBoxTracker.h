@@ -299,6 +299,9 @@ class KalmanBoxTracker {
     double lost_at = 0;     // s
     cv::Mat identity = {};  // identity_check's descriptor; empty without
   };
+  /// The index in remembered_ of the entry of t's category whose `descriptor` lies nearest t's
+  /// running descriptor, if nearer than `best` (then lowered to its distance); -1 otherwise.
+  int closestRemembered(const Tracked& t, cv::Mat Remembered::*descriptor, double& best) const;
 
   KalmanBoxTrackerParams params_;
   std::vector<Tracked> tracked_;
