@@ -8,6 +8,7 @@
 //       [--sweep Tracking.rho_min=0.3,0.5,0.6,0.7,0.8]  ('' for none)
 //       [--set Section.key=value]...   (Tracking.* goes to the tracker, Segmentation.* to the
 //                                       segmentation, the rest to the scenario)
+//       [--scenarios 2-13] [--seeds 1-24] [--jobs N]   (a set of runs: tracking_run_set.h)
 //       [--video vtest.avi --model yolox_nano.onnx --strip strip.png [--video-frames N]]
 //
 // The simulated run: the scenario rendered in-process twice (the first pass writes the
@@ -22,6 +23,7 @@
 // - hypotheses: confirmed tracks matched this frame or coasting for at most --report-coasting
 //   detector frames (DeepSORT reports tracks missed for at most 1), boxes clipped to the image
 //   as the truth's are.
+#include "tracking_run_set.h"
 #include "tracking_sim_input.h"
 #include "tracking_video.h"
 
@@ -40,6 +42,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 #include <tuple>
 
 namespace {
@@ -304,6 +307,26 @@ tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& o
   return stage.options().tracker;
 }
 
+/// --sweep "Tracking.key=v1,v2,...": the key and its values; an empty key for none.
+std::pair<std::string, std::vector<std::string>> sweepValues(const BenchSettings& s) {
+  if (s.sweep.empty()) return {};
+  const size_t eq = s.sweep.find('=');
+  if (eq == std::string::npos || s.sweep.rfind("Tracking.", 0) != 0)
+    throw core::UsageError("--sweep must read Tracking.key=v1,v2,..., not '" + s.sweep + "'");
+  std::vector<std::string> values;
+  std::stringstream items(s.sweep.substr(eq + 1));
+  for (std::string v; std::getline(items, v, ',');) values.push_back(v);
+  return {s.sweep.substr(0, eq), values};
+}
+
+/// The tracker's settings with one swept key set to v (everything else as given).
+tracking::KalmanBoxTrackerParams sweptParams(const BenchSettings& s, const std::string& key,
+                                             const std::string& v) {
+  std::vector<std::string> overrides = s.tracker_overrides;
+  overrides.push_back(key + "=" + v);
+  return trackerParams(overrides);
+}
+
 void benchSimulation(const BenchSettings& s) {
   const tracking::KalmanBoxTrackerParams params = trackerParams(s.tracker_overrides);
   const auto start = std::chrono::steady_clock::now();
@@ -386,23 +409,36 @@ void benchSimulation(const BenchSettings& s) {
                   counts.second);
     for (const auto& e : main.switchEvents) std::printf("  %s\n", e.c_str());
   }
-  if (s.sweep.empty()) return;
-  // "Tracking.key=v1,v2,...": one run per value, the other settings as above.
-  const size_t eq = s.sweep.find('=');
-  if (eq == std::string::npos || s.sweep.rfind("Tracking.", 0) != 0)
-    throw core::UsageError("--sweep must read Tracking.key=v1,v2,..., not '" + s.sweep + "'");
-  const std::string key = s.sweep.substr(0, eq);
+  const auto [key, values] = sweepValues(s);
+  if (key.empty()) return;
   std::printf("\nsweep of %s (everything else as above)\n", key.c_str());
   std::printf("  %12s   MOTA   IDF1  IDsw  frag    FP    FN  tracks\n", key.c_str() + 9);
-  std::stringstream values(s.sweep.substr(eq + 1));
-  for (std::string v; std::getline(values, v, ',');) {
-    std::vector<std::string> overrides = s.tracker_overrides;
-    overrides.push_back(key + "=" + v);
-    const TrackerRun r = runTracker(run, trackerParams(overrides), s.report_coasting);
+  for (const auto& v : values) {
+    const TrackerRun r = runTracker(run, sweptParams(s, key, v), s.report_coasting);
     std::printf("  %12s  %5.3f  %5.3f  %4zu  %4zu  %4zu  %4zu  %6d\n", v.c_str(), r.mot.mota,
                 r.mot.idf1, r.mot.id_switches, r.mot.fragmentations, r.mot.false_positives,
                 r.mot.misses, r.tracks_started);
   }
+}
+
+/// --scenarios / --seeds: the settings given and each sweep value over every run of the set.
+void benchSimulationSet(const BenchSettings& s, const std::vector<int>& scenarios,
+                        const std::vector<int>& seeds, int jobs) {
+  const auto [key, values] = sweepValues(s);
+  std::vector<tracking::KalmanBoxTrackerParams> params = {trackerParams(s.tracker_overrides)};
+  std::vector<std::string> names = {"as given"};
+  for (const auto& v : values) {
+    params.push_back(sweptParams(s, key, v));
+    names.push_back(key.substr(9) + "=" + v);
+  }
+  bench::benchRunSet(s, scenarios, seeds, jobs, names, [&](const CachedRun& run) {
+    std::vector<bench::RunScore> scores;
+    for (const auto& p : params) {
+      const evaluation::MotResult m = runTracker(run, p, s.report_coasting).mot;
+      scores.push_back({m.mota, m.idf1, m.id_switches});
+    }
+    return scores;
+  });
 }
 
 }  // namespace
@@ -411,7 +447,8 @@ int main(int argc, char** argv) {
   return core::runProgram("bench-tracking", [&] {
     core::CommandLine cl({"--config", "--frames", "--miss-rate", "--jitter", "--min-visible",
                           "--seed", "--depth", "--report-coasting", "--video", "--model", "--strip",
-                          "--video-frames", "--sweep", "--trace"},
+                          "--video-frames", "--sweep", "--trace", "--scenarios", "--seeds",
+                          "--jobs"},
                          {"--identities"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
@@ -419,6 +456,7 @@ int main(int argc, char** argv) {
                    "[--jitter 3] [--min-visible 0.2] [--seed 1] [--depth segmentation|truth|box] "
                    "[--report-coasting 1] [--sweep Tracking.key=v1,v2,...|''] [--set "
                    "Section.key=value]... [--identities] [--trace FIRST-LAST] "
+                   "[--scenarios A-B] [--seeds A-B] [--jobs N] "
                    "[--video FILE --model ONNX --strip PNG [--video-frames N]]\n";
       return 0;
     }
@@ -454,6 +492,23 @@ int main(int argc, char** argv) {
       v.frames = size_t(cl.optionalInteger("--video-frames").value_or(0));
       v.tracker = trackerParams(s.tracker_overrides);
       benchVideo(v);
+      return 0;
+    }
+    if (cl.has("--scenarios") || cl.has("--seeds")) {
+      if (cl.has("--seed") || cl.has("--trace") || s.identities)
+        throw core::UsageError(
+            "--scenarios / --seeds run a set: give --seeds instead of --seed, and --trace or "
+            "--identities to single runs only");
+      const std::vector<int> scenarios =
+          cl.has("--scenarios") ? bench::parseRange("--scenarios", cl.required("--scenarios"))
+                                : std::vector<int>{1};
+      const std::vector<int> seeds = cl.has("--seeds")
+                                         ? bench::parseRange("--seeds", cl.required("--seeds"))
+                                         : std::vector<int>{int(s.seed)};
+      const long long hardware = std::max(1u, std::thread::hardware_concurrency());
+      const long long jobs = cl.optionalInteger("--jobs").value_or(hardware);
+      if (jobs < 1) throw core::UsageError("--jobs must be at least 1");
+      benchSimulationSet(s, scenarios, seeds, int(jobs));
       return 0;
     }
     benchSimulation(s);

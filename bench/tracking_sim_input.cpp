@@ -11,6 +11,7 @@
 #include <dynslam/tracking/DepthIoU.h>
 
 #include <unistd.h>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -49,8 +50,11 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
   const sim::Simulator simulator(options);
   const size_t frames =
       s.frames ? std::min(s.frames, simulator.frameCount()) : simulator.frameCount();
+  // One folder per call: --jobs prepares several runs at once in one process.
+  static std::atomic<int> calls{0};
   const std::string dir =
-      (std::filesystem::temp_directory_path() / ("bench-tracking-" + std::to_string(getpid())))
+      (std::filesystem::temp_directory_path() /
+       ("bench-tracking-" + std::to_string(getpid()) + "-" + std::to_string(calls++)))
           .string();
   detection::GroundTruthDetectorSettings gt;
   gt.objects = writeObjects(simulator, frames, dir);
