@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -70,36 +71,49 @@ cv::Rect2d candidateBox(const cv::Rect& roi) {
   return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
 }
 
-// Does the detection boxed `front` stand in front of the one boxed `back`, whose candidate
-// samples split into 2-means clusters `c`? On a flat floor the box reaching lower in the image
-// is the nearer one, and a box cut off by the image's bottom edge is nearer than one whose
-// bottom shows. When both are cut off, or their bottoms lie within a detector's few pixels of
-// each other, that says nothing. Then the near surface is `front`'s when (a) `back`'s near samples
-// lie inside `front`'s box, and so does that surface wherever it shows in `back`'s whole box
-// (an occluder's pixels are inside its box; a person beside `back` at the same depth shows also
-// outside it), and (b) the surface also shows in `front`'s candidate
-// box outside `back`'s box (an occluder is larger than the part of it in front of `back`; a
-// person behind `back` shows there at its own, farther, depth). When `front`'s candidate box
-// lies wholly inside `back`'s box, (b) cannot tell, and of two people the one whose box reaches
-// higher in the image is the nearer (heads of similar heights; the bottoms said nothing):
-// indoor_people_high, the surface of the person in front was taken as the hidden person's in
-// most of the severe-occlusion cases that (b) left undecided (seed 16: 1.29 m for 2.44 m).
-bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& back,
-                   const TwoMeansResult& c, double margin, int samples) {
-  // A detector's box edges are a few pixels off (GroundTruthDetector's 3 px jitter; a box cut at
-  // the image's edge ended at 475-479 of 480 rows and passed for one whose feet show): bottoms
-  // within the tolerance of each other or of the edge say nothing.
-  const int tolerance = std::max(2, depth.rows / 50);
+// Is `p` inside any of `boxes`?
+bool insideAny(const std::vector<cv::Rect>& boxes, cv::Point p) {
+  return std::any_of(boxes.begin(), boxes.end(), [&](const cv::Rect& b) { return b.contains(p); });
+}
+
+// A detector's box edges are a few pixels off (GroundTruthDetector's 3 px jitter; a box cut at
+// the image's edge ended at 475-479 of 480 rows and passed for one whose feet show): edges
+// within this many pixels of each other or of the image's edge say nothing.
+int edgeTolerance(int rows) { return std::max(2, rows / 50); }
+
+// What the boxes' bottoms say of whether the detection boxed `front` stands in front of the one
+// boxed `back`: on a flat floor the box reaching lower in the image is the nearer one, and a box
+// cut off by the image's bottom edge is nearer than one whose bottom shows. When both are cut
+// off, or their bottoms lie within a detector's few pixels of each other, nothing (nullopt).
+std::optional<bool> bottomsSayInFront(const cv::Rect& front, const cv::Rect& back, int rows) {
+  const int tolerance = edgeTolerance(rows);
   const int frontBottom = front.y + front.height, backBottom = back.y + back.height;
-  const bool frontCut = frontBottom >= depth.rows - tolerance;
-  const bool backCut = backBottom >= depth.rows - tolerance;
+  const bool frontCut = frontBottom >= rows - tolerance;
+  const bool backCut = backBottom >= rows - tolerance;
   if (frontCut != backCut) return frontCut;
   if (!frontCut && std::abs(frontBottom - backBottom) > tolerance) return frontBottom > backBottom;
+  return std::nullopt;
+}
+
+// Is the near surface of the detection boxed `back`, whose candidate samples split into 2-means
+// clusters `c`, that of the detections boxed `fronts` (one, or several hiding it together)?
+// Yes when (a) `back`'s near samples lie inside the fronts' boxes, and so does that surface
+// wherever it shows in `back`'s whole box (an occluder's pixels are inside its box; a person
+// beside `back` at the same depth shows also outside it), and (b) the surface also shows in the
+// fronts' candidate boxes outside `back`'s box (an occluder is larger than the part of it in
+// front of `back`; a person behind `back` shows there at its own, farther, depth). When the
+// fronts' candidate boxes lie wholly inside `back`'s box, (b) cannot tell, and of two people
+// the one whose box reaches higher in the image is the nearer (heads of similar heights; the
+// bottoms said nothing): indoor_people_high, the surface of the person in front was taken as
+// the hidden person's in most of the severe-occlusion cases that (b) left undecided (seed 16:
+// 1.29 m for 2.44 m).
+bool surfaceInFront(const cv::Mat& depth, const std::vector<cv::Rect>& fronts,
+                    const cv::Rect& back, const TwoMeansResult& c, double margin, int samples) {
   int nearSamples = 0, nearInside = 0;
   forEachGridPoint(depth, candidateBox(back), samples, [&](cv::Point p, float z) {
     if (std::abs(z - c.near_mean) >= std::abs(z - c.far_mean)) return;
     ++nearSamples;
-    nearInside += front.contains(p);
+    nearInside += insideAny(fronts, p);
   });
   if (nearSamples == 0 || nearInside < 0.9 * nearSamples) return false;
   // The same over the whole of `back`'s box, where a person beside `back` whose box covers the
@@ -108,17 +122,29 @@ bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& 
   forEachGridPoint(depth, cv::Rect2d(back), samples, [&](cv::Point p, float z) {
     if (std::abs(z - c.near_mean) >= margin) return;
     ++nearInBox;
-    nearInFront += front.contains(p);
+    nearInFront += insideAny(fronts, p);
   });
   if (nearInBox == 0 || nearInFront < 0.95 * nearInBox) return false;
   int outside = 0, onSurface = 0;
-  forEachGridPoint(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
-    if (back.contains(p)) return;
-    ++outside;
-    onSurface += std::abs(z - c.near_mean) < margin;
-  });
-  if (outside == 0) return front.y < back.y - tolerance;
+  for (const cv::Rect& front : fronts)
+    forEachGridPoint(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
+      if (back.contains(p)) return;
+      ++outside;
+      onSurface += std::abs(z - c.near_mean) < margin;
+    });
+  const int tolerance = edgeTolerance(depth.rows);
+  if (outside == 0)
+    return std::any_of(fronts.begin(), fronts.end(),
+                       [&](const cv::Rect& f) { return f.y < back.y - tolerance; });
   return onSurface >= 0.3 * outside;
+}
+
+// Does the detection boxed `front` stand in front of the one boxed `back`? The bottoms when
+// they tell, else the near surface's place (surfaceInFront).
+bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& back,
+                   const TwoMeansResult& c, double margin, int samples) {
+  if (const auto bottoms = bottomsSayInFront(front, back, depth.rows)) return *bottoms;
+  return surfaceInFront(depth, {front}, back, c, margin, samples);
 }
 
 // Two 2-means clusters more than e apart are two surfaces (an object and what lies behind or
@@ -138,22 +164,24 @@ double meanOfAll(const TwoMeansResult& c) {
 // centre of the box, and the object shows only beside it (behindOccluder).
 constexpr double kFewBehind = 0.25;
 
-// The object's clusters in a box whose near cluster `c.near_mean` is an occluder boxed
-// `occluder`. When the far cluster holds enough of the candidate samples, they are what lies
+// The object's clusters in a box whose near cluster `c.near_mean` is the surface of occluders
+// boxed `occluders`. When the far cluster holds enough of the candidate samples, they are what lies
 // behind the occluder, and may themselves be the object in front of the background, which the
 // far cluster's mean would blur into one depth: of two clusters more than `e` apart, the
 // nearer, as without an occluder. When the occluder hides nearly all of the candidate box, the
 // object is sought where it can show: m grid points over the whole box `roi` outside the
-// occluder's box and more than `margin` behind it, split by the same rule. (Tried: only the upper
+// occluders' boxes and more than `margin` behind it, split by the same rule. (Tried: only the upper
 // 0.5-0.75 of the box, to keep the floor out, and the nearest compact run of depths rather
 // than 2-means: both worse on indoor_people_high.)
-TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi, const cv::Rect& occluder,
+TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi,
+                              const std::vector<cv::Rect>& occluders,
                               const std::vector<float>& sorted, const TwoMeansResult& c,
                               double margin, double e, int m, double maxDepth) {
   std::vector<float> behind;
   if (c.far_count < kFewBehind * (c.near_count + c.far_count)) {
     forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point p, float z) {
-      if (!occluder.contains(p) && z > c.near_mean + margin && z <= maxDepth) behind.push_back(z);
+      if (!insideAny(occluders, p) && z > c.near_mean + margin && z <= maxDepth)
+        behind.push_back(z);
     });
   }
   const bool beside = behind.size() >= 4;  // else too little to tell the object from background
@@ -385,6 +413,8 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     bool occluded = false;
     // Is the near surface another detection standing in front?
     const cv::Rect2d candidate = candidateBox(rois[i]);
+    std::vector<cv::Rect> together;  // the detections at the near surface's depth, not behind
+    double togetherMargin = e;
     for (size_t j = 0; j < n && nearIsObject; ++j) {
       if (j == i || !ok[j] || (cv::Rect2d(rois[j]) & candidate).empty()) continue;
       const double ej = marginFor(detections[j]);
@@ -393,10 +423,24 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
       if (std::abs(nearest - c.near_mean) >= ej &&
           std::abs(clusters[j].far_mean - c.near_mean) >= ej)
         continue;
+      if (bottomsSayInFront(rois[j], rois[i], depth.rows).value_or(true)) {
+        together.push_back(rois[j]);
+        togetherMargin = std::min(togetherMargin, ej);
+      }
       if (!standsInFront(depth, rois[j], rois[i], c, ej / 2, params_.m)) continue;
       nearIsObject = false;
       occluded = true;
-      c = behindOccluder(depth, rois[i], rois[j], samples[i], c, ej / 2, e, params_.m, maxDepth[i]);
+      c = behindOccluder(depth, rois[i], {rois[j]}, samples[i], c, ej / 2, e, params_.m,
+                         maxDepth[i]);
+    }
+    // Two people may hide it together, each covering too little of its box alone (between
+    // them: the near samples split between their boxes).
+    if (nearIsObject && params_.joint_occluders && together.size() >= 2 &&
+        surfaceInFront(depth, together, rois[i], c, togetherMargin / 2, params_.m)) {
+      nearIsObject = false;
+      occluded = true;
+      c = behindOccluder(depth, rois[i], together, samples[i], c, togetherMargin / 2, e,
+                         params_.m, maxDepth[i]);
     }
     // A detection seen standing in front outweighs the track's depth: a track that followed
     // the occluder's surface would otherwise keep choosing it.

@@ -44,6 +44,7 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.max_height_person = c.read_double(s, "max_height_person", p.max_height_person);
   p.expected_depth_band = c.read_double(s, "expected_depth_band", p.expected_depth_band);
   p.retry_taken_surface = core::readBool(c, s, "retry_taken_surface", p.retry_taken_surface);
+  p.joint_occluders = core::readBool(c, s, "joint_occluders", p.joint_occluders);
   p.object_cluster = core::readKeyword(c, s, "object_cluster", p.object_cluster, kClusters);
   p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
   p.object_depth = core::readKeyword(c, s, "object_depth", p.object_depth, kObjectDepths);
@@ -73,6 +74,11 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       c, s, "retry_taken_surface", p.retry_taken_surface,
       "with occluder_aware: a mask whose surface the overlap step gives to another object is "
       "cut again on what its box shows behind that surface (not the method)");
+  core::writeKey(
+      c, s, "joint_occluders", p.joint_occluders,
+      "with occluder_aware: when no single nearer detection passes as the occluder, those at "
+      "the near surface's depth are tested together (a person between two nearer people; not "
+      "the method)");
   core::writeKey(
       c, s, "object_cluster", std::string(core::wordOf(p.object_cluster, kClusters)),
       "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "

@@ -307,3 +307,44 @@ TEST(OccluderAwareCluster, ATrackDepthOnTheOccludersSurfaceDoesNotUndoTheOcclude
   EXPECT_NEAR(masks[1].d_t, 2.5, 1e-6) << "B";
   EXPECT_NEAR(masks[1].d_o, 1.2, 1e-6);
 }
+
+TEST(OccluderAwareCluster, TwoPeopleHidingAPersonTogetherAreItsOccludersWithJointOccluders) {
+  // C (2.4 m) stands between and behind A (1.2 m) and B (1.3 m); each covers about half of C's
+  // candidate box, C shows in the gap between them. All boxes reach the bottom edge, so the
+  // bottoms say nothing, and neither A nor B alone holds 90 % of C's near samples: C takes
+  // their surface as its own. joint_occluders (not the method) tests A and B together.
+  const Body a{{60, 50, 105, 190}, 60, 165, 1.2f}, b{{180, 55, 100, 185}, 180, 280, 1.3f},
+      c{{120, 30, 100, 210}, 120, 220, 2.4f};
+  const cv::Mat depth = peopleCutOffAtTheBottom({c, a, b});
+  const std::vector<core::Detection> boxes = {person(a.box), person(b.box), person(c.box)};
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::OccluderAware;
+  const auto without = DepthThresholdSegmenter(p).segment(depth, boxes);
+  ASSERT_EQ(without.size(), 3u);
+  EXPECT_LT(without[2].d_t, 1.35) << "C on A's and B's surface";
+  p.joint_occluders = true;
+  const auto with = DepthThresholdSegmenter(p).segment(depth, boxes);
+  ASSERT_EQ(with.size(), 3u);
+  EXPECT_NEAR(with[2].d_t, 2.4, 1e-5) << "C behind A and B";
+  EXPECT_GT(with[2].d_o, 1.15);
+  EXPECT_LT(with[2].d_o, 1.35);
+  EXPECT_NEAR(with[0].d_t, 1.2, 1e-5) << "A unchanged";
+  EXPECT_NEAR(with[1].d_t, 1.3, 1e-5) << "B unchanged";
+}
+
+TEST(OccluderAwareCluster, JointOccludersDoNotHideAPersonStandingBetweenThemAtTheirDepth) {
+  // A, B and C side by side at 1.5 m, C's box overlapping both of theirs, the wall between C's
+  // legs: C's surface shows in C's box outside A's and B's boxes, so they do not hide it.
+  const Body a{{40, 0, 100, 240}, 40, 120, 1.5f}, b{{200, 0, 100, 240}, 220, 300, 1.5f},
+      c{{100, 0, 120, 240}, 120, 220, 1.5f};
+  cv::Mat depth = peopleCutOffAtTheBottom({a, b, c});
+  depth(cv::Rect(165, 150, 10, 90)).setTo(6.0f);  // between C's legs
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::OccluderAware;
+  p.joint_occluders = true;
+  const auto masks =
+      DepthThresholdSegmenter(p).segment(depth, {person(a.box), person(b.box), person(c.box)});
+  ASSERT_EQ(masks.size(), 3u);
+  EXPECT_NEAR(masks[2].d_t, 1.5, 1e-6) << "C";
+  EXPECT_EQ(masks[2].d_o, 0.0) << "C has no occluder";
+}

@@ -16,7 +16,8 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
                                              "e_car = 2.5\ne_other_rigid = 2\n"
                                              "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"
                                              "max_height_person = 2.2\nexpected_depth_band = 0.1\n"
-                                             "retry_taken_surface = true\n"),
+                                             "retry_taken_surface = true\n"
+                                             "joint_occluders = true\n"),
                    "Segmentation");
   const auto& p = dynamic_cast<segmentation::SegmentationStage&>(*stage).options().params;
   EXPECT_EQ(p.m, 36);
@@ -29,6 +30,7 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   EXPECT_EQ(p.max_height_person, 2.2);
   EXPECT_EQ(p.expected_depth_band, 0.1);
   EXPECT_TRUE(p.retry_taken_surface);
+  EXPECT_TRUE(p.joint_occluders);
 }
 
 TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) {

@@ -94,6 +94,11 @@ struct DepthThresholdParams {
   /// its occluder; with fewer than 4 such grid points an empty mask takes its other cluster
   /// (when more than e away). Step 9 then runs again.
   bool retry_taken_surface = false;
+  /// NOT the method; with object_cluster = occluder_aware. When no single detection at the
+  /// near cluster's depth passes as the occluder, those of them together (their boxes' union)
+  /// are tested the same way: a person between two nearer people, each covering part of its
+  /// box, otherwise takes their surface as its own.
+  bool joint_occluders = false;
   ObjectCluster object_cluster = ObjectCluster::Far;
   OverlapRule overlap_rule = OverlapRule::Nearer;
   ObjectDepth object_depth = ObjectDepth::ClusterMean;
