@@ -139,14 +139,6 @@ bool surfaceInFront(const cv::Mat& depth, const std::vector<cv::Rect>& fronts,
   return onSurface >= 0.3 * outside;
 }
 
-// Does the detection boxed `front` stand in front of the one boxed `back`? The bottoms when
-// they tell, else the near surface's place (surfaceInFront).
-bool standsInFront(const cv::Mat& depth, const cv::Rect& front, const cv::Rect& back,
-                   const TwoMeansResult& c, double margin, int samples) {
-  if (const auto bottoms = bottomsSayInFront(front, back, depth.rows)) return *bottoms;
-  return surfaceInFront(depth, {front}, back, c, margin, samples);
-}
-
 // Two 2-means clusters more than e apart are two surfaces (an object and what lies behind or
 // before it), not the spread of one.
 bool twoSurfaces(const TwoMeansResult& c, double e) {
@@ -413,7 +405,9 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     bool occluded = false;
     // Is the near surface another detection standing in front?
     const cv::Rect2d candidate = candidateBox(rois[i]);
-    std::vector<cv::Rect> together;  // the detections at the near surface's depth, not behind
+    // joint_occluders: the detections at the near surface's depth whose bottoms do not put them
+    // behind it.
+    std::vector<cv::Rect> together;
     double togetherMargin = e;
     for (size_t j = 0; j < n && nearIsObject; ++j) {
       if (j == i || !ok[j] || (cv::Rect2d(rois[j]) & candidate).empty()) continue;
@@ -423,11 +417,15 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
       if (std::abs(nearest - c.near_mean) >= ej &&
           std::abs(clusters[j].far_mean - c.near_mean) >= ej)
         continue;
-      if (bottomsSayInFront(rois[j], rois[i], depth.rows).value_or(true)) {
+      // Does j stand in front of i? The bottoms when they tell, else the near surface's place.
+      const std::optional<bool> bottoms = bottomsSayInFront(rois[j], rois[i], depth.rows);
+      if (params_.joint_occluders && bottoms.value_or(true)) {
         together.push_back(rois[j]);
         togetherMargin = std::min(togetherMargin, ej);
       }
-      if (!standsInFront(depth, rois[j], rois[i], c, ej / 2, params_.m)) continue;
+      const bool inFront =
+          bottoms ? *bottoms : surfaceInFront(depth, {rois[j]}, rois[i], c, ej / 2, params_.m);
+      if (!inFront) continue;
       nearIsObject = false;
       occluded = true;
       c = behindOccluder(depth, rois[i], {rois[j]}, samples[i], c, ej / 2, e, params_.m,
@@ -435,7 +433,7 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     }
     // Two people may hide it together, each covering too little of its box alone (between
     // them: the near samples split between their boxes).
-    if (nearIsObject && params_.joint_occluders && together.size() >= 2 &&
+    if (nearIsObject && together.size() >= 2 &&
         surfaceInFront(depth, together, rois[i], c, togetherMargin / 2, params_.m)) {
       nearIsObject = false;
       occluded = true;
