@@ -39,6 +39,8 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.identity_check, "identity_check");
   TRACKING_READ(int, t.identity_repair, "identity_repair");
   t.alternative_depth = core::readBool(c, s, "alternative_depth", t.alternative_depth);
+  t.alternative_depth_tracks =
+      core::readBool(c, s, "alternative_depth_tracks", t.alternative_depth_tracks);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
   TRACKING_READ(double, t.innovation_gate, "innovation_gate");
@@ -90,6 +92,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "match by the nearer of the mask's two cluster depths where the chosen "
                  "one is another detection's surface, or the other is nearer and nobody's "
                  "(not the method)");
+  TRACKING_WRITE(t.alternative_depth_tracks, "alternative_depth_tracks",
+                 "with alternative_depth: also where the chosen depth is the surface of a "
+                 "recent track overlapping the box that cannot be its own (not the method)");
   TRACKING_WRITE(t.depth_gate, "depth_gate",
                  "0 = off; a confirmed track ignores a matched depth this fraction off the "
                  "last depth it took (the box still counts; not the method)");

@@ -113,11 +113,13 @@ TEST(TrackingKalmanBoxTracker, DepthDecidesAcceptanceAtRhoMin) {
 }
 
 namespace {
-/// Tracks confirmed on their first detection, with or without Tracking.alternative_depth.
-KalmanBoxTracker trackerConfirmingAtOnce(bool alternativeDepth) {
+/// Tracks confirmed on their first detection, with or without Tracking.alternative_depth (and
+/// alternative_depth_tracks).
+KalmanBoxTracker trackerConfirmingAtOnce(bool alternativeDepth, bool alternativeDepthTracks = false) {
   KalmanBoxTrackerParams params;
   params.min_hits = 1;
   params.alternative_depth = alternativeDepth;
+  params.alternative_depth_tracks = alternativeDepthTracks;
   return KalmanBoxTracker(params);
 }
 }  // namespace
@@ -153,6 +155,46 @@ TEST(TrackingKalmanBoxTracker, AlternativeDepthTakesTheOtherClusterWhenTheChosen
   ASSERT_NE(p, nullptr);
   EXPECT_EQ(p->detection, 0);
   EXPECT_NEAR(p->depth, 3.0, 0.05) << "updated by d_alt, not by the occluder's surface";
+}
+
+TEST(TrackingKalmanBoxTracker, AlternativeDepthTracksTakeTheOtherClusterWhenTheOccluderWasMissed) {
+  // As above, but Q's detection is missed on frame 3: only Q's track says that P's d_t is Q's
+  // surface. Without alternative_depth_tracks P's track refuses the detection (depth IoU 0.5 x
+  // 1.52 / 3) and a new track starts on Q's depth; with it P's track takes it by d_alt.
+  for (const bool tracks : {false, true}) {
+    KalmanBoxTracker tracker = trackerConfirmingAtOnce(true, tracks);
+    for (int k = 0; k < 3; ++k)
+      step(tracker, k, {person(300, 150, 50, 150, 3.0), person(240, 100, 100, 300, 1.5)});
+    BoxObservation hidden = person(300, 150, 50, 150, 1.52);
+    hidden.depth_alt = 3.0;
+    const auto after = step(tracker, 3, {hidden});
+    const core::Track* p = findId(after, 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->detection, tracks ? 0 : -1) << tracks;
+    EXPECT_EQ(after.size(), tracks ? 2u : 3u) << "a new track on Q's surface without the key";
+    if (tracks) {
+      EXPECT_NEAR(p->depth, 3.0, 0.05) << "updated by d_alt, not by the occluder's surface";
+    }
+  }
+}
+
+TEST(TrackingKalmanBoxTracker, AlternativeDepthTracksDoNotCountTheDetectionsOwnTrack) {
+  // Two tracks on one box: the person (2 m) and one started on the wall behind it (4 m). The
+  // detection's d_t is the person's track's surface, but that track could take the detection
+  // itself (box IoU above rho_min), so d_alt (the wall) stays out and only the person's track
+  // takes the person's detection; the wall's track coasts.
+  KalmanBoxTracker tracker = trackerConfirmingAtOnce(true, true);
+  for (int k = 0; k < 3; ++k)
+    step(tracker, k, {person(100, 100, 60, 180, 4.0), person(100, 100, 60, 180, 2.0)});
+  for (int k = 3; k < 10; ++k) {
+    BoxObservation seen = person(100, 100, 60, 180, 2.0);
+    seen.depth_alt = 4.0;
+    for (const auto& t : step(tracker, k, {seen})) {
+      if (t.detection == 0) {
+        EXPECT_EQ(t.id, 2) << "frame " << k;
+      }
+    }
+  }
 }
 
 TEST(TrackingKalmanBoxTracker, AlternativeDepthDoesNotHoldATrackOnTheWrongSurface) {

@@ -82,6 +82,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "init_rate_depth",
                           "reid_memory",
                           "alternative_depth",
+                          "alternative_depth_tracks",
                           "depth_gate",
                           "depth_gate_frames",
                           "innovation_gate",
@@ -90,7 +91,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "identity_check",
                           "identity_repair"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 28u);
+  EXPECT_EQ(keys.size(), 29u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),

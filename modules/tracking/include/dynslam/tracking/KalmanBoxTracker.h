@@ -109,6 +109,17 @@ struct KalmanBoxTrackerParams {
   /// cluster and nobody else's; otherwise a track whose depth once went to the wall or to an
   /// occluder would keep taking that surface through d_alt.
   bool alternative_depth = false;
+  /// Not the method (with alternative_depth): d_alt also counts where d_t is the surface of a
+  /// track seen on one of the last two frames whose predicted box overlaps the detection's
+  /// but too little to be its own (box IoU <= rho_min). The occluder's detection was missed:
+  /// the segmentation gave the person behind it the occluder's surface and there is no other
+  /// detection to tell, so its track (depth IoU under rho_min at that depth) lost it and a new
+  /// track started on the occluder's depth (bench-tracking, segmentation depth, choreography
+  /// 13 seed 2, frame 123). bench-tracking, segmentation depth: IDF1 0.7209 -> 0.7300 over
+  /// choreographies 2-13 x detector seeds 1-4 (32 runs better, 14 worse), 0.8429 -> 0.8508 on
+  /// choreography 1 x 24 seeds; ID switches 48.1 -> 43.9 and 38.6 -> 35.4 per run. On in
+  /// params/sim_perception*.ini; off in sim_vio.ini and sim_frontend.ini (README "Perception").
+  bool alternative_depth_tracks = false;
   /// Not the method (0 = off): a confirmed track's depth is not updated by a matched depth more
   /// than this fraction off the last depth it took (the box still is), for up to
   /// depth_gate_frames frames in a row; then the measurement counts again, so a track that is
