@@ -118,7 +118,9 @@ struct KalmanBoxTrackerParams {
   /// 13 seed 2, frame 123). bench-tracking, segmentation depth: IDF1 0.7209 -> 0.7300 over
   /// choreographies 2-13 x detector seeds 1-4 (32 runs better, 14 worse), 0.8429 -> 0.8508 on
   /// choreography 1 x 24 seeds; ID switches 48.1 -> 43.9 and 38.6 -> 35.4 per run. On in
-  /// params/sim_perception*.ini; off in sim_vio.ini and sim_frontend.ini (README "Perception").
+  /// params/sim_perception*.ini; off in sim_vio.ini and sim_frontend.ini, where the camera's APE
+  /// was not better (indoor 0.00638 -> 0.00657 m over 18 seeds, street 0.0687 -> 0.0698 m over 9;
+  /// README "Perception").
   bool alternative_depth_tracks = false;
   /// Not the method (0 = off): a confirmed track's depth is not updated by a matched depth more
   /// than this fraction off the last depth it took (the box still is), for up to
