@@ -66,17 +66,28 @@ constexpr int kRecentMisses = 1;
 // (bench-segmentation: median d_t error 2 %); two people a pace apart differ by 20 % and more.
 constexpr double kSameSurfaceRatio = 0.85;
 
-/// True when `depth` is the surface of another observation whose box overlaps observation j's:
-/// its d_t lies within kSameSurfaceRatio and nearer `depth` than `otherDepth`.
+/// True when `depth` is the surface at `surface` (m): within kSameSurfaceRatio of it and nearer
+/// it than `otherDepth`.
+bool isSurface(double surface, double depth, double otherDepth) {
+  const double same = core::depthRatio(surface, depth);
+  return same >= kSameSurfaceRatio && same > core::depthRatio(surface, otherDepth);
+}
+
+/// True when `depth` is the surface of another observation whose box overlaps observation j's
+/// (isSurface of its d_t).
 bool surfaceOfAnother(const std::vector<BoxObservation>& observations, size_t j, double depth,
                       double otherDepth) {
   for (size_t k = 0; k < observations.size(); ++k) {
     const BoxObservation& n = observations[k];
     if (k == j || !(n.depth > 0) || (n.box & observations[j].box).area() <= 0) continue;
-    const double same = core::depthRatio(n.depth, depth);
-    if (same >= kSameSurfaceRatio && same > core::depthRatio(n.depth, otherDepth)) return true;
+    if (isSurface(n.depth, depth, otherDepth)) return true;
   }
   return false;
+}
+
+/// A track's predicted box clipped to `image` (when given), as detectors clip theirs.
+cv::Rect2f clippedToImage(const cv::Rect2f& box, const cv::Size& image) {
+  return image.empty() ? box : box & cv::Rect2f(0, 0, float(image.width), float(image.height));
 }
 
 }  // namespace
@@ -94,7 +105,7 @@ struct TrackSurface {
 };
 
 /// alternative_depth_tracks: true when `depth` (of a detection's `box`) is the surface of one of
-/// `tracks` (within kSameSurfaceRatio and nearer `depth` than `otherDepth`) whose box overlaps
+/// `tracks` (isSurface of its depth) whose box overlaps
 /// the detection's, as surfaceOfAnother asks of detections, but too little to be its own track
 /// (box IoU <= maxOwnIoU, so its depth IoU cannot pass rho_min): the occluder of a partly
 /// hidden person whose own detection the detector missed on this frame. (Asking the track's
@@ -104,8 +115,7 @@ bool surfaceOfTrack(const std::vector<TrackSurface>& tracks, const cv::Rect2f& b
                     double otherDepth, double maxOwnIoU) {
   for (const TrackSurface& t : tracks) {
     if ((t.box & box).area() <= 0 || boxIoU(t.box, box) > maxOwnIoU) continue;
-    const double same = core::depthRatio(t.depth, depth);
-    if (same >= kSameSurfaceRatio && same > core::depthRatio(t.depth, otherDepth)) return true;
+    if (isSurface(t.depth, depth, otherDepth)) return true;
   }
   return false;
 }
@@ -205,14 +215,13 @@ void KalmanBoxTracker::associate(const std::vector<BoxObservation>& observations
                                  const cv::Size& image, double threshold, bool coastingOnly,
                                  std::vector<int>& observationOf,
                                  std::vector<char>& observationUsed) const {
-  const cv::Rect2f frame(0, 0, float(image.width), float(image.height));
   assignRound(
       tracked_, observations,
       [&](const Tracked& tr) { return !coastingOnly || tr.track.misses > 0; },
       [](const BoxObservation&) { return true; },
       [&](const Tracked& tr, const BoxObservation& o) {
         // Detectors clip their boxes to the image: compare like with like.
-        const cv::Rect2f predicted = image.empty() ? tr.filter.box() : tr.filter.box() & frame;
+        const cv::Rect2f predicted = clippedToImage(tr.filter.box(), image);
         const double value = depthIoU(predicted, tr.filter.state()(kD), o.box, depthFor(tr, o));
         if (!(value > threshold)) return 0.0;
         return params_.innovation_gate > 0 &&
@@ -312,13 +321,10 @@ void KalmanBoxTracker::checkIdentities() {
 
 void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv::Size& image) {
   std::vector<TrackSurface> recent;  // alternative_depth_tracks' surfaces
-  if (params_.alternative_depth && params_.alternative_depth_tracks) {
-    const cv::Rect2f frame(0, 0, float(image.width), float(image.height));
+  if (params_.alternative_depth && params_.alternative_depth_tracks)
     for (const Tracked& tr : tracked_)
       if (tr.track.misses <= kRecentMisses && tr.filter.state()(kD) > 0)
-        recent.push_back({image.empty() ? tr.filter.box() : tr.filter.box() & frame,
-                          tr.filter.state()(kD)});
-  }
+        recent.push_back({clippedToImage(tr.filter.box(), image), tr.filter.state()(kD)});
   const std::vector<BoxObservation> observations =
       params_.alternative_depth ? withOwnedAlternatives(input, recent, params_.rho_min) : input;
   std::vector<int> observationOf(tracked_.size(), -1);
