@@ -264,8 +264,10 @@ void KalmanBoxTracker::updateIdentity(Tracked& tr, const cv::Mat& descriptor) co
   constexpr double kIdentityMemory = 0.95;
   if (tr.identity.empty()) {
     tr.identity = descriptor.clone();
+    tr.identity_views = 1;
   } else if (appearanceDistance(tr.identity, descriptor) < kConsistentWithIdentity) {
     tr.identity = kIdentityMemory * tr.identity + (1 - kIdentityMemory) * descriptor;
+    ++tr.identity_views;
     tr.inconsistent_views = 0;
   } else {
     ++tr.inconsistent_views;
@@ -284,10 +286,12 @@ void KalmanBoxTracker::repairIdentity(size_t index) {
                          appearanceDistance(t.identity, t.appearance) - params_.identity_check);
   const int found = closestRemembered(t, &Remembered::identity, best);
   if (found < 0) return;
-  Remembered old{t.track.id, t.track.category, t.appearance, last_t_, t.identity};
+  Remembered old{t.track.id, t.track.category, t.appearance, last_t_, t.identity,
+                 t.identity_views};
   Remembered& r = remembered_[found];
   t.track.id = r.id;
   t.identity = r.identity;
+  t.identity_views = r.identity_views;
   r = std::move(old);  // the id this track gives up, for its person to be revived into
   t.match = TrackMatch::Repaired;
   ++repaired_;
@@ -311,6 +315,7 @@ void KalmanBoxTracker::checkIdentities() {
       if (!(aAsB + bAsA + params_.identity_check < own[a] + own[b])) continue;
       std::swap(A.track.id, B.track.id);
       std::swap(A.identity, B.identity);
+      std::swap(A.identity_views, B.identity_views);
       A.inconsistent_views = B.inconsistent_views = 0;  // counted against the other identity
       own[a] = aAsB;  // each view against the identity it has now, for the pairs still to come
       own[b] = bAsA;
@@ -389,7 +394,8 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
       ++lost_;
       if (remembers() && tr.track.state == core::TrackState::Confirmed && !tr.appearance.empty())
         remembered_.push_back(
-            {tr.track.id, tr.track.category, tr.appearance, last_t_, tr.identity});
+            {tr.track.id, tr.track.category, tr.appearance, last_t_, tr.identity,
+             tr.identity_views});
       continue;
     }
     kept.push_back(std::move(tr));
@@ -499,11 +505,22 @@ void KalmanBoxTracker::reviveIdentity(size_t index) {
     const double d = appearanceDistance(o.appearance, t.appearance);
     if (d < best) best = d, coasting = int(k), remembered = -1;
   }
+  // revival_takes_identity: the identity goes with its id, as on a swap or a repair.
+  auto takeIdentity = [&](const cv::Mat& identity, int views) {
+    if (params_.revival_takes_identity <= 0 || identity.empty() ||
+        views < params_.revival_takes_identity)
+      return;
+    t.identity = identity;
+    t.identity_views = views;
+    t.inconsistent_views = 0;  // counted against the identity it had
+  };
   if (coasting >= 0) {
     t.track.id = tracked_[coasting].track.id;
+    takeIdentity(tracked_[coasting].identity, tracked_[coasting].identity_views);
     tracked_[coasting].track.state = core::TrackState::Lost;  // removed by update()
   } else if (remembered >= 0) {
     t.track.id = remembered_[remembered].id;
+    takeIdentity(remembered_[remembered].identity, remembered_[remembered].identity_views);
     remembered_.erase(remembered_.begin() + remembered);
   } else {
     return;

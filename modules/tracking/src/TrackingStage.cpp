@@ -44,6 +44,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
   TRACKING_READ(double, t.innovation_gate, "innovation_gate");
+  TRACKING_READ(int, t.revival_takes_identity, "revival_takes_identity");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
   TRACKING_READ(double, n.meas_area_rel, "meas_area_rel");
   TRACKING_READ(double, n.meas_depth_rel, "meas_depth_rel");
@@ -103,6 +104,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   TRACKING_WRITE(t.innovation_gate, "innovation_gate",
                  "0 = off; refuse a pair whose box centre's squared Mahalanobis distance from "
                  "the prediction exceeds this (chi-square, 2 dof; not the method)");
+  TRACKING_WRITE(t.revival_takes_identity, "revival_takes_identity",
+                 "0 = off; with identity_check, a track revived into an old id takes that id's "
+                 "identity descriptor when it took at least this many views (not the method)");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");
@@ -140,6 +144,10 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
     throw core::ConfigError("[" + section +
                             "] identity_repair = " + std::to_string(t.identity_repair) + " in " +
                             cfg.source() + ": must be >= 0 (views; 0: off)");
+  if (t.revival_takes_identity < 0)
+    throw core::ConfigError("[" + section + "] revival_takes_identity = " +
+                            std::to_string(t.revival_takes_identity) + " in " + cfg.source() +
+                            ": must be >= 0 (views; 0: off)");
   if (t.depth_gate_frames < 0)
     throw core::ConfigError("[" + section +
                             "] depth_gate_frames = " + std::to_string(t.depth_gate_frames) +

@@ -309,3 +309,47 @@ TEST(TrackingKalmanBoxTracker, IdentityRepairGivesATrackTheLostIdOfThePersonItFo
   EXPECT_EQ(idAfter(5, 9), std::make_pair(2, 1)) << "colour 9's id, given once";
   EXPECT_EQ(idAfter(5, 20).first, 1) << "a colour no lost track had";
 }
+
+// Two people whose colours are alike (half of each descriptor in one shared bin: distance 0.71).
+// A is missed just as B stands where A was, so A's track 1 takes B (the association swapped
+// them, as at a crossing), and B's track 2 is lost and remembered. A comes back elsewhere: its
+// new track, once confirmed, is revived into id 2, the only one within reid_max_distance. Each
+// id now sits on the other's person. When the revived track takes over id 2's identity
+// descriptor (9 views of B: a new track takes none on its first frame), identity_check sees each
+// track's views match the other's identity and swaps the ids back; when it keeps its own first
+// views as identity, both identities describe A and nothing tells (bench-tracking, true depth,
+// choreography 8 seed 4: 400 frames on the other's id). revival_takes_identity = 30 asks for
+// more views than id 2's identity took.
+TEST(TrackingKalmanBoxTracker, ARevivedIdKeepsItsIdentitySoAWrongRevivalIsSwappedBack) {
+  auto dressedAlike = [](BoxObservation o, int bin) {
+    o.appearance = cv::Mat::zeros(1, kAppearanceBins, CV_32F);
+    o.appearance.at<float>(3) = 0.5f;
+    o.appearance.at<float>(bin) = 0.5f;
+    return o;
+  };
+  auto idsOfAAndB = [&](int takesIdentity) {
+    KalmanBoxTrackerParams params;
+    params.reid_max_distance = 0.75;
+    params.reid_memory = 10;
+    params.identity_check = 0.1;
+    params.max_age = 3;
+    params.revival_takes_identity = takesIdentity;
+    KalmanBoxTracker tracker(params);
+    auto a = [&](float x) { return dressedAlike(person(x, 100, 60, 180, 3.0), 5); };
+    auto b = [&](float x) { return dressedAlike(person(x, 100, 60, 180, 3.0), 9); };
+    int k = 0;
+    for (; k < 10; ++k) step(tracker, k, {a(200), b(400)});
+    for (; k < 15; ++k) step(tracker, k, {b(200)});
+    std::vector<core::Track> tracks;
+    for (; k < 25; ++k) tracks = step(tracker, k, {b(200), a(500)});
+    int idA = -1, idB = -1;
+    for (const auto& t : tracks) {
+      if (t.detection == 0) idB = t.id;
+      if (t.detection == 1) idA = t.id;
+    }
+    return std::make_pair(idA, idB);
+  };
+  ASSERT_EQ(idsOfAAndB(0), std::make_pair(2, 1)) << "without: each on the other's id";
+  EXPECT_EQ(idsOfAAndB(5), std::make_pair(1, 2));
+  EXPECT_EQ(idsOfAAndB(30), std::make_pair(2, 1)) << "too young an identity to take";
+}

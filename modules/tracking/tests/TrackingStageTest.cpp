@@ -89,14 +89,17 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "reid_at_track_depth",
                           "descriptor_own_surface",
                           "identity_check",
-                          "identity_repair"})
+                          "identity_repair",
+                          "revival_takes_identity"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 29u);
+  EXPECT_EQ(keys.size(), 30u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nmin_hits = 0\n").find("min_hits"), std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nrevival_takes_identity = -1\n").find("revival_takes_identity"),
+            std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nratio_walk = 0\n").find("ratio_walk"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nreid_memory = -1\n").find("reid_memory"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nidentity_repair = -1\n").find("identity_repair"),
