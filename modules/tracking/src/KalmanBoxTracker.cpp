@@ -495,21 +495,35 @@ int KalmanBoxTracker::closestRemembered(const Tracked& t, cv::Mat Remembered::*d
 void KalmanBoxTracker::reviveIdentity(size_t index) {
   Tracked& t = tracked_[index];
   if (t.appearance.empty()) return;
+  // revival_takes_identity: an id whose identity took enough views is that identity: it is what
+  // the new track is compared with, and it goes with the id, as on a swap or a repair.
+  auto established = [&](const cv::Mat& identity, int views) {
+    return params_.revival_takes_identity > 0 && !identity.empty() &&
+           views >= params_.revival_takes_identity;
+  };
+  auto describedAs = [&](const cv::Mat& running, const cv::Mat& identity, int views) {
+    return established(identity, views) ? identity : running;
+  };
   double best = params_.reid_max_distance;
-  int remembered = closestRemembered(t, &Remembered::appearance, best), coasting = -1;
+  int remembered = -1, coasting = -1;
+  for (size_t k = 0; k < remembered_.size(); ++k) {
+    const Remembered& r = remembered_[k];
+    if (r.category != t.track.category) continue;
+    const double d = appearanceDistance(
+        describedAs(r.appearance, r.identity, r.identity_views), t.appearance);
+    if (d < best) best = d, remembered = int(k);
+  }
   for (size_t k = 0; k < tracked_.size(); ++k) {
     const Tracked& o = tracked_[k];
     if (k == index || o.track.state != core::TrackState::Confirmed || o.track.misses == 0 ||
         o.track.category != t.track.category || o.appearance.empty())
       continue;
-    const double d = appearanceDistance(o.appearance, t.appearance);
+    const double d = appearanceDistance(
+        describedAs(o.appearance, o.identity, o.identity_views), t.appearance);
     if (d < best) best = d, coasting = int(k), remembered = -1;
   }
-  // revival_takes_identity: the identity goes with its id, as on a swap or a repair.
   auto takeIdentity = [&](const cv::Mat& identity, int views) {
-    if (params_.revival_takes_identity <= 0 || identity.empty() ||
-        views < params_.revival_takes_identity)
-      return;
+    if (!established(identity, views)) return;
     t.identity = identity;
     t.identity_views = views;
     t.inconsistent_views = 0;  // counted against the identity it had

@@ -105,8 +105,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "0 = off; refuse a pair whose box centre's squared Mahalanobis distance from "
                  "the prediction exceeds this (chi-square, 2 dof; not the method)");
   TRACKING_WRITE(t.revival_takes_identity, "revival_takes_identity",
-                 "0 = off; with identity_check, a track revived into an old id takes that id's "
-                 "identity descriptor when it took at least this many views (not the method)");
+                 "0 = off; with identity_check, an id whose identity descriptor took at least "
+                 "this many views is compared by it in the revival and keeps it when revived "
+                 "(not the method)");
   TRACKING_WRITE(n.meas_center_px, "meas_center_px", "px; sigma of the measured box centre");
   TRACKING_WRITE(n.meas_area_rel, "meas_area_rel", "sigma of the measured area / area");
   TRACKING_WRITE(n.meas_depth_rel, "meas_depth_rel", "sigma of the measured depth / depth");

@@ -140,19 +140,22 @@ struct KalmanBoxTrackerParams {
   /// the way it walked, at IoU 0.6) and the two identities swapped for good. The covariance grows
   /// while a track coasts, so the gate widens with the time hidden.
   double innovation_gate = 0.0;
-  /// Not the method (0 = off; needs identity_check and reid_memory): a new track revived into
-  /// an old id (reid_memory) takes that id's identity descriptor with it, when the identity was
-  /// built from at least this many views; otherwise it keeps its own first views as identity. A
-  /// swap and a repair already move the identity with the id. A wrong revival (a track that took
-  /// another person hid its own person's id: that person's new track got the coasting or lost id
-  /// of the other) put two identities of one person on two ids, and identity_check, which reads
-  /// each id's identity, could not see the swap (bench-tracking, true depth, choreography 8 seed
-  /// 4: two people on each other's id for 400 frames; with this, swapped back at once). An
-  /// identity of a few views is no identity: with any (1), early mix-ups that the ids had kept
-  /// consistently were "corrected" in mid-run, which IDF1 counts twice. bench-tracking,
-  /// choreographies 2-13 x detector seeds 1-4, segmentation depth: IDF1 0.7300 -> 0.7558 at 10
-  /// (30 runs better, 8 worse; 0.7433 at 1, 0.7521 at 30). On in params/sim_perception*.ini, where
-  /// identity_check is; the whole-system inis have identity_check off.
+  /// Not the method (0 = off; needs identity_check and reid_memory): an id whose identity
+  /// descriptor was built from at least this many views is that identity in the revival. A new
+  /// track is compared with it (not with the old track's running descriptor, which follows
+  /// whoever that track took last), and a revived track takes it with the id, as a swap and a
+  /// repair already move the identity with the id; ids with younger identities are compared and
+  /// revived as before, and the new track keeps its own first views as identity. A wrong revival
+  /// (a track that took another person hid its own person's id: that person's new track got the
+  /// other's coasting or lost id) put two identities of one person on two ids, and
+  /// identity_check, which reads each id's identity, could not see the swap (bench-tracking, true
+  /// depth, choreography 8 seed 4: two people on each other's ids for 400 frames; with this,
+  /// swapped back at once). An identity of a few views is no identity: taking any (1) undid early
+  /// mix-ups that the ids had kept consistently in mid-run, which IDF1 counts against.
+  /// bench-tracking, choreographies 2-13 x detector seeds 1-4, at 10: IDF1 with the
+  /// segmentation's depth 0.7300 -> 0.7772, with true depth 0.8421 -> 0.8786 (README
+  /// "Perception"). On in params/sim_perception*.ini, where identity_check is; the whole-system
+  /// inis have identity_check off.
   int revival_takes_identity = 0;
   /// Not the method (0 = off): each confirmed track also keeps a slow "identity" descriptor,
   /// updated (weight 0.95 on the old) only by views within distance 0.35 of it. When two
