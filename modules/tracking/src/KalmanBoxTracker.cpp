@@ -284,7 +284,8 @@ void KalmanBoxTracker::repairIdentity(size_t index) {
   // starts it (updateIdentity), and only described tracks are remembered.
   double best = std::min(kConsistentWithIdentity,
                          appearanceDistance(t.identity, t.appearance) - params_.identity_check);
-  const int found = closestRemembered(t, &Remembered::identity, best);
+  const int found =
+      closestRemembered(t, [](const Remembered& r) -> const cv::Mat& { return r.identity; }, best);
   if (found < 0) return;
   Remembered old{t.track.id, t.track.category, t.appearance, last_t_, t.identity,
                  t.identity_views};
@@ -480,13 +481,14 @@ void KalmanBoxTracker::restartCutComponents(KalmanBoxFilter& filter, const cv::R
   if (cutY) filter.restartFrom({kV}, z, P0);
 }
 
-int KalmanBoxTracker::closestRemembered(const Tracked& t, cv::Mat Remembered::*descriptor,
-                                        double& best) const {
+int KalmanBoxTracker::closestRemembered(
+    const Tracked& t, const std::function<const cv::Mat&(const Remembered&)>& descriptorOf,
+    double& best) const {
   int found = -1;
   for (size_t k = 0; k < remembered_.size(); ++k) {
     const Remembered& r = remembered_[k];
     if (r.category != t.track.category) continue;
-    const double d = appearanceDistance(r.*descriptor, t.appearance);
+    const double d = appearanceDistance(descriptorOf(r), t.appearance);
     if (d < best) best = d, found = int(k);
   }
   return found;
@@ -501,18 +503,18 @@ void KalmanBoxTracker::reviveIdentity(size_t index) {
     return params_.revival_takes_identity > 0 && !identity.empty() &&
            views >= params_.revival_takes_identity;
   };
-  auto describedAs = [&](const cv::Mat& running, const cv::Mat& identity, int views) {
+  auto describedAs = [&](const cv::Mat& running, const cv::Mat& identity,
+                         int views) -> const cv::Mat& {
     return established(identity, views) ? identity : running;
   };
   double best = params_.reid_max_distance;
-  int remembered = -1, coasting = -1;
-  for (size_t k = 0; k < remembered_.size(); ++k) {
-    const Remembered& r = remembered_[k];
-    if (r.category != t.track.category) continue;
-    const double d = appearanceDistance(
-        describedAs(r.appearance, r.identity, r.identity_views), t.appearance);
-    if (d < best) best = d, remembered = int(k);
-  }
+  int coasting = -1;
+  int remembered = closestRemembered(
+      t,
+      [&](const Remembered& r) -> const cv::Mat& {
+        return describedAs(r.appearance, r.identity, r.identity_views);
+      },
+      best);
   for (size_t k = 0; k < tracked_.size(); ++k) {
     const Tracked& o = tracked_[k];
     if (k == index || o.track.state != core::TrackState::Confirmed || o.track.misses == 0 ||

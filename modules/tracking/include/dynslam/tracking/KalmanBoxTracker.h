@@ -331,9 +331,12 @@ class KalmanBoxTracker {
     cv::Mat identity = {};  // identity_check's descriptor; empty without
     int identity_views = 0;  // views that identity took
   };
-  /// The index in remembered_ of the entry of t's category whose `descriptor` lies nearest t's
-  /// running descriptor, if nearer than `best` (then lowered to its distance); -1 otherwise.
-  int closestRemembered(const Tracked& t, cv::Mat Remembered::*descriptor, double& best) const;
+  /// The index in remembered_ of the entry of t's category whose descriptor (`descriptorOf` the
+  /// entry: its identity, its running descriptor or either) lies nearest t's running
+  /// descriptor, if nearer than `best` (then lowered to its distance); -1 otherwise.
+  int closestRemembered(const Tracked& t,
+                        const std::function<const cv::Mat&(const Remembered&)>& descriptorOf,
+                        double& best) const;
 
   KalmanBoxTrackerParams params_;
   std::vector<Tracked> tracked_;
