@@ -2,6 +2,7 @@
 
 #include "dynslam/frontend/CameraMotion.h"
 #include "dynslam/frontend/FlowPrediction.h"
+#include "dynslam/frontend/OcclusionEdge.h"
 
 #include <dynslam/core/Median.h>
 #include <opencv2/calib3d.hpp>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -49,6 +51,10 @@ void validate(const FeatureTrackerParams& p) {
           p.max_klt_residual_ratio, "0 (off) or >= 1");
   require(p.residual_gate_margin_px >= 0, "residual_gate_margin_px", p.residual_gate_margin_px,
           ">= 0");
+  const auto& e = p.occlusion_edge;
+  require(e.radius_px >= 0, "occlusion_edge_radius_px", e.radius_px, ">= 0");
+  require(e.min_gap_m > 0, "occlusion_edge_min_gap_m", e.min_gap_m, "> 0");
+  require(e.gap_ratio >= 0, "occlusion_edge_gap_ratio", e.gap_ratio, ">= 0");
   require(p.fundamental_threshold_px > 0, "fundamental_threshold_px", p.fundamental_threshold_px,
           "> 0");
   require(p.fundamental_confidence > 0 && p.fundamental_confidence < 1, "fundamental_confidence",
@@ -154,9 +160,11 @@ std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
     trackExisting(frame);
   else
     tracks_.clear();
+  const auto behindEdge = occlusionEdgeTest(frame);
+  if (behindEdge) stats_.lost_occlusion = dropTracks(behindEdge);
   {
     ScopedMs timer(stats_.ms_detect);
-    pruneAndDetect(gray);
+    pruneAndDetect(gray, behindEdge);  // new corners are not placed there either
   }
 
   std::vector<core::Feature> out;
@@ -351,7 +359,35 @@ void FeatureTracker::rejectByFundamental(const core::Frame& frame,
   tracks.resize(w);
 }
 
-void FeatureTracker::pruneAndDetect(const cv::Mat& gray) {
+std::function<bool(const cv::Point2f&)> FeatureTracker::occlusionEdgeTest(
+    const core::Frame& frame) const {
+  if (params_.occlusion_edge.radius_px <= 0 || frame.depth.empty()) return {};
+  cv::Mat nearer;  // empty: every reading may be the nearer surface
+  if (params_.occlusion_edge_objects_only) {
+    nearer = cv::Mat::zeros(frame.depth.size(), CV_8UC1);
+    const cv::Rect image({0, 0}, nearer.size());
+    for (const auto& m : frame.object_masks) {
+      const cv::Rect roi = m.roi & image;
+      if (m.mask.empty() || roi.empty()) continue;
+      cv::Mat dst = nearer(roi);
+      cv::bitwise_or(dst, m.mask(roi - m.roi.tl()), dst);
+    }
+  }
+  return [depth = frame.depth, nearer, &p = params_.occlusion_edge](const cv::Point2f& pixel) {
+    return behindOcclusionEdge(depth, pixel, p, nearer);
+  };
+}
+
+int FeatureTracker::dropTracks(const std::function<bool(const cv::Point2f&)>& where) {
+  const auto end = std::remove_if(tracks_.begin(), tracks_.end(),
+                                  [&](const Track& t) { return where(t.pixel); });
+  const int dropped = int(tracks_.end() - end);
+  tracks_.erase(end, tracks_.end());
+  return dropped;
+}
+
+void FeatureTracker::pruneAndDetect(const cv::Mat& gray,
+                                    const std::function<bool(const cv::Point2f&)>& rejected) {
   // Longest tracks claim their space first; a younger track that drifted into it goes.
   std::vector<size_t> order(tracks_.size());
   std::iota(order.begin(), order.end(), size_t(0));
@@ -380,7 +416,8 @@ void FeatureTracker::pruneAndDetect(const cv::Mat& gray) {
   const cv::Mat& scored =
       params_.corners.level == 0 ? gray : pyramid_.at(step * size_t(params_.corners.level));
   for (const auto& p :
-       detectGridCorners(scored, free, occupied, wanted, params_.corners, &stats_.cells_computed))
+       detectGridCorners(scored, free, occupied, wanted, params_.corners, &stats_.cells_computed,
+                         rejected))
     tracks_.push_back({next_id_++, p, median_velocity_, 1});
   stats_.detected = int(tracks_.size()) - stats_.tracked;
 }

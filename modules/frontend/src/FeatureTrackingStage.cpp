@@ -38,6 +38,11 @@ void FeatureTrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
   t.residual_gate_region = residualGateRegionFromString(
       c.read_string(s, "residual_gate_region", toString(t.residual_gate_region)));
   FT_READ(double, t.residual_gate_margin_px, "residual_gate_margin_px");
+  FT_READ(int, t.occlusion_edge.radius_px, "occlusion_edge_radius_px");
+  FT_READ(double, t.occlusion_edge.min_gap_m, "occlusion_edge_min_gap_m");
+  FT_READ(double, t.occlusion_edge.gap_ratio, "occlusion_edge_gap_ratio");
+  t.occlusion_edge_objects_only =
+      core::readBool(c, s, "occlusion_edge_objects_only", t.occlusion_edge_objects_only);
   t.flow_init = flowInitFromString(c.read_string(s, "flow_init", toString(t.flow_init)));
   t.fundamental_ransac = core::readBool(c, s, "fundamental_ransac", t.fundamental_ransac);
   FT_READ(double, t.fundamental_threshold_px, "fundamental_threshold_px");
@@ -79,6 +84,16 @@ void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       "object's box) or everywhere");
   FT_WRITE(t.residual_gate_margin_px, "residual_gate_margin_px",
            "px around a non-rigid object's box within which near_nonrigid gates");
+  FT_WRITE(t.occlusion_edge.radius_px, "occlusion_edge_radius_px",
+           "not the method: px; no track or new corner where a nearer surface (by the gap "
+           "below) lies this close: it would follow that surface's silhouette (0: off)");
+  FT_WRITE(t.occlusion_edge.min_gap_m, "occlusion_edge_min_gap_m",
+           "m; a surface nearer by more than max(this, occlusion_edge_gap_ratio x depth) is an "
+           "occluding edge");
+  FT_WRITE(t.occlusion_edge.gap_ratio, "occlusion_edge_gap_ratio",
+           "the occluding edge's depth gap relative to the pixel's depth");
+  FT_WRITE(t.occlusion_edge_objects_only, "occlusion_edge_objects_only",
+           "only the object masks' readings count as the nearer surface (false: any reading)");
   core::writeKey(c, s, "flow_init", toString(t.flow_init),
           "KLT start: gyro (rotation K R K^-1; previous_motion without gyro samples), "
           "previous_motion (constant velocity per point) or none");
@@ -110,6 +125,7 @@ void FeatureTrackingStage::process(core::Frame& frame) {
   lostFb_ += size_t(s.lost_fb);
   lostResidual_ += size_t(s.lost_residual);
   lostRansac_ += size_t(s.lost_ransac);
+  lostOcclusion_ += size_t(s.lost_occlusion);
   trackingMs_.push_back(s.ms_pyramid + s.ms_klt + s.ms_ransac);
   extractionMs_.push_back(s.ms_detect);
   std::map<std::int64_t, int> alive;
@@ -145,6 +161,7 @@ std::vector<std::pair<std::string, double>> FeatureTrackingStage::statistics() c
           {"lost_forward_backward_fraction", double(lostFb_) / in},
           {"lost_residual_fraction", double(lostResidual_) / in},
           {"lost_ransac_fraction", double(lostRansac_) / in},
+          {"lost_occlusion_edge_fraction", double(lostOcclusion_) / in},
           {"tracking_ms_median", core::upperMedian(trackingMs_)},
           {"extraction_ms_median", core::upperMedian(extractionMs_)}};
 }

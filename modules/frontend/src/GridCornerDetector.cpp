@@ -80,9 +80,10 @@ bool claimIfFree(cv::Mat& free, const cv::Point2f& p, const GridCornerParams& pa
   return true;
 }
 
-std::vector<cv::Point2f> detectGridCorners(const cv::Mat& scored, cv::Mat& free,
-                                           const std::vector<cv::Point2f>& occupied, int wanted,
-                                           const GridCornerParams& params, int* cellsComputed) {
+std::vector<cv::Point2f> detectGridCorners(
+    const cv::Mat& scored, cv::Mat& free, const std::vector<cv::Point2f>& occupied, int wanted,
+    const GridCornerParams& params, int* cellsComputed,
+    const std::function<bool(const cv::Point2f&)>& rejected) {
   std::vector<cv::Point2f> taken;
   if (cellsComputed) *cellsComputed = 0;
   const cv::Size size = free.size();
@@ -114,11 +115,13 @@ std::vector<cv::Point2f> detectGridCorners(const cv::Mat& scored, cv::Mat& free,
         computed[c] = true;
         if (cellsComputed) ++*cellsComputed;
       }
-      // Skip candidates that a corner taken since (in a neighbouring cell) crowds out.
-      while (head[c] < bucket[c].size() &&
-             free.at<uint8_t>(cv::Point(cvRound(bucket[c][head[c]].pixel.x),
-                                        cvRound(bucket[c][head[c]].pixel.y))) == 0)
-        ++head[c];
+      // Skip candidates that a corner taken since (in a neighbouring cell) crowds out, and the
+      // rejected ones.
+      const auto skipped = [&](const cv::Point2f& p) {
+        return free.at<uint8_t>(cv::Point(cvRound(p.x), cvRound(p.y))) == 0 ||
+               (rejected && rejected(p));
+      };
+      while (head[c] < bucket[c].size() && skipped(bucket[c][head[c]].pixel)) ++head[c];
       if (head[c] < bucket[c].size()) round.push_back(c);
     }
     if (round.empty()) continue;  // those cells turned out empty; the level moves on

@@ -254,3 +254,54 @@ TEST(FeatureTrackerSim, FundamentalRansacSparesFeaturesInsideObjectMasks) {
   EXPECT_GT(unmaskedOutside, 0.8);
   EXPECT_GT(maskedOutside, 0.8);
 }
+
+// occlusion_edge_radius_px: tracks just behind the edge of a nearer object (the true masks
+// here) are dropped, which are most of the background tracks that slide along with a walker's
+// silhouette (KLT's window, and the coarse levels' wider ones, hold the edge). Counted:
+// background tracks (label 0 in both frames) more than 2 px from where the true camera motion
+// puts them. Measured (2 s, 300 features): 294 of 9686 off, 2162 features within 7 px behind
+// an object's edge; on, 26 of 9550.
+TEST(FeatureTrackerSim, TracksBehindAnObjectsEdgeAreDroppedAndFewerSlideWithTheWalkers) {
+  const sim::Simulator sim(scenario("indoor_people_high", {"Scenario.duration=2"}));
+  const auto run = [&](int radius) {
+    FeatureTrackerParams params;
+    params.max_features = 300;
+    params.occlusion_edge.radius_px = radius;
+    FeatureTracker tracker(params);
+    std::map<int64_t, core::Feature> previous;
+    sim::SimFrame previousTruth;
+    size_t background = 0, sliding = 0, behindEdge = 0;
+    for (size_t i = 0; i < sim.frameCount(); ++i) {
+      auto f = simulatedFrame(sim, i);
+      f.frame.object_masks = frontend::testing::truthMasks(f.truth);
+      const cv::Mat objects = f.truth.image.label > 0;
+      const auto features = tracker.track(f.frame);
+      for (const auto& feature : features) {
+        behindEdge += frontend::behindOcclusionEdge(f.frame.depth, feature.pixel,
+                                                    frontend::OcclusionEdgeParams{7}, objects);
+        const auto it = previous.find(feature.id);
+        if (it == previous.end() || it->second.depth <= 0 ||
+            labelAt(previousTruth, it->second.pixel) != 0 || labelAt(f.truth, feature.pixel) != 0)
+          continue;
+        const cv::Point2d expected =
+            reproject(it->second.pixel, it->second.depth, sim.camera(),
+                      previousTruth.T_world_camera, f.truth.T_world_camera);
+        ++background;
+        sliding += cv::norm(expected - cv::Point2d(feature.pixel)) > 2.0;
+      }
+      previous.clear();
+      for (const auto& feature : features) previous[feature.id] = feature;
+      previousTruth = f.truth;
+    }
+    std::cout << "radius " << radius << ": " << sliding << " of " << background
+              << " background tracks off by > 2 px; " << behindEdge
+              << " features within 7 px behind an object's edge\n";
+    return std::tuple{sliding, background, behindEdge};
+  };
+  const auto [slidingOff, backgroundOff, behindOff] = run(0);
+  const auto [slidingOn, backgroundOn, behindOn] = run(7);
+  EXPECT_GT(behindOff, 100u) << "people in a room make edges";
+  EXPECT_EQ(behindOn, 0u) << "none is kept or detected there";
+  EXPECT_GT(backgroundOn, 0.8 * backgroundOff) << "the rest of the background stays";
+  EXPECT_LT(double(slidingOn) / backgroundOn, 0.2 * double(slidingOff) / backgroundOff);
+}

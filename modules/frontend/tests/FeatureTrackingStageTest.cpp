@@ -64,7 +64,7 @@ TEST(FeatureTrackingStage, EveryKeyIsWrittenWithAComment) {
   mrpt::config::CConfigFileMemory ini;
   options.saveToConfigFile(ini, "FeatureTracking");
   const auto keys = core::knownKeys(options);
-  EXPECT_EQ(keys.size(), 22u);
+  EXPECT_EQ(keys.size(), 26u);
   const std::string text = ini.getContent();
   std::istringstream lines(text);
   size_t commented = 0;
@@ -95,6 +95,12 @@ TEST(FeatureTrackingStage, BadInputIsAnErrorNamingTheKey) {
   EXPECT_NE(
       errorOf("[FeatureTracking]\nmax_klt_residual_ratio = 0.5\n").find("max_klt_residual_ratio"),
       std::string::npos);
+  EXPECT_NE(errorOf("[FeatureTracking]\nocclusion_edge_radius_px = -1\n")
+                .find("occlusion_edge_radius_px"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[FeatureTracking]\nocclusion_edge_min_gap_m = 0\n")
+                .find("occlusion_edge_min_gap_m"),
+            std::string::npos);
   const std::string e = errorOf("[FeatureTracking]\nfundamental_confidence = 1\n");
   EXPECT_NE(e.find("[FeatureTracking] fundamental_confidence"), std::string::npos) << e;
   EXPECT_NE(e.find("test.ini"), std::string::npos) << e;

@@ -42,7 +42,8 @@ class FeatureTrackingStage : public core::Stage {
   FeatureTrackingOptions options_;
   std::optional<FeatureTracker> tracker_;
   size_t frames_ = 0, features_ = 0, detected_ = 0, gyroFrames_ = 0;
-  size_t incoming_ = 0, lostKlt_ = 0, lostFb_ = 0, lostResidual_ = 0, lostRansac_ = 0;
+  size_t incoming_ = 0, lostKlt_ = 0, lostFb_ = 0, lostResidual_ = 0, lostRansac_ = 0,
+         lostOcclusion_ = 0;
   std::map<std::int64_t, int> alive_;  // id -> track_length in the last frame
   double endedLengthSum_ = 0;
   size_t ended_ = 0;

@@ -10,6 +10,7 @@
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace dynslam::frontend {
@@ -50,10 +51,11 @@ bool claimIfFree(cv::Mat& free, const cv::Point2f& p, const GridCornerParams& pa
 /// from each other and from `occupied`, chosen round by round: every cell that holds the
 /// fewest corners (counting `occupied`) takes its strongest remaining candidate, stronger
 /// candidates first, until `wanted` are taken or the candidates run out. Also returns how many
-/// cells had their corners computed (`cellsComputed`, optional).
-std::vector<cv::Point2f> detectGridCorners(const cv::Mat& scored, cv::Mat& free,
-                                           const std::vector<cv::Point2f>& occupied, int wanted,
-                                           const GridCornerParams& params,
-                                           int* cellsComputed = nullptr);
+/// cells had their corners computed (`cellsComputed`, optional). A candidate for which
+/// `rejected` (optional) is true is passed over for the next one of its cell.
+std::vector<cv::Point2f> detectGridCorners(
+    const cv::Mat& scored, cv::Mat& free, const std::vector<cv::Point2f>& occupied, int wanted,
+    const GridCornerParams& params, int* cellsComputed = nullptr,
+    const std::function<bool(const cv::Point2f&)>& rejected = {});
 
 }  // namespace dynslam::frontend
