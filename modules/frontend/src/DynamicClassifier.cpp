@@ -157,6 +157,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     Eigen::Vector3d P;
     const Observation* previous = nullptr;  ///< the feature's point in the previous frame
     double speed = -1;  ///< |scene flow| / time over the window, m/s; < 0: not measured
+    double speed_sigma = 0;  ///< its depth noise, m/s
   };
   std::vector<Current> cur(frame.features.size());
   std::vector<Eigen::Vector3d> bgPrev, bgCur;  // pairs outside every mask
@@ -291,6 +292,7 @@ void DynamicClassifier::process(core::Frame& frame) {
         break;
       velocities[c.region->object_id].push_back(F / dt);
       cur[i].speed = speed;
+      cur[i].speed_sigma = std::sqrt(var);
       velocityVar[c.region->object_id] += var;
       cameraVarSum[c.region->object_id] += cameraVarianceSince(o.frame) / (dt * dt);
       break;
@@ -372,7 +374,9 @@ void DynamicClassifier::process(core::Frame& frame) {
                    inStillObjectsBox(regions, lastDynamic_, region->object_id, f.pixel)));
     const bool movingInStillObject = region && !dynamic[region->object_id] &&
                                      params_.moving_feature_speed > 0 &&
-                                     cur[i].speed > params_.moving_feature_speed &&
+                                     cur[i].speed - params_.speed_noise_sigmas *
+                                                        cur[i].speed_sigma >
+                                         params_.moving_feature_speed &&
                                      cur[i].speed < params_.moving_feature_max_speed;
     const bool movingFar =
         farOf[i] && dynamic[farOf[i]->object_id] && farSpeed[i] > params_.speed_threshold;

@@ -504,6 +504,43 @@ TEST(DynamicClassifier, MovingFeaturesInAStillObjectsMaskAreNonRigid) {
   EXPECT_EQ(run(0.5), 25) << "the walker's features move at 0.85 m/s: NonRigid";
 }
 
+// ... but by more than the flow's depth noise (speed_noise_sigmas): five of the parked car's
+// corners are new every other frame (one-frame flows) and read 1.2 m/s of depth jitter (+-2 cm
+// per frame at 4.5 m), within two sigmas of the sensor model's noise (about 0.3 m/s).
+TEST(DynamicClassifier, AStillObjectsNoisyFlowIsNotMotion) {
+  auto run = [](double sigmas) {
+    DynamicClassifierParams params;
+    params.moving_feature_speed = 0.8;  // as params/sim_frontend.ini
+    params.speed_noise_sigmas = sigmas;
+    const Scene scene;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    for (int k = 0; k < 16; ++k) {  // the last frame's corners have a one-frame flow
+      f = scene.frame(k);
+      for (auto& feat : f.features)
+        if (feat.id >= 3000 && feat.id < 3005) {
+          feat.depth += (k % 2 ? 0.02f : -0.02f);
+          feat.id += 100000 * (k / 2);  // a new corner every other frame
+        }
+      classifier.process(f);
+    }
+    int noisy = 0, noisyNonRigid = 0, carStatic = 0;
+    for (const auto& feat : f.features) {
+      if (feat.object_id != 3) continue;
+      carStatic += feat.feature_class == core::FeatureClass::Static;
+      if (feat.id >= 100000) {
+        ++noisy;
+        noisyNonRigid += feat.feature_class == core::FeatureClass::NonRigid;
+      }
+    }
+    EXPECT_EQ(noisy, 5);
+    EXPECT_GE(carStatic, 20) << "the car is judged still";
+    return noisyNonRigid;
+  };
+  EXPECT_EQ(run(0.0), 5) << "without the margin the jitter passes for motion";
+  EXPECT_EQ(run(2.0), 0) << "1.2 m/s of depth noise on a one-frame flow is not motion";
+}
+
 // Most of a standing person's features read the wall 2.5 m behind from frame 12 on (tracks that
 // slid off its silhouette, depth windows that flipped surfaces): their flow, metres per second,
 // outvotes the still ones in the component-wise median and the person is judged moving. With
