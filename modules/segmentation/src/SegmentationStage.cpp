@@ -49,6 +49,10 @@ void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
   p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
   p.object_depth = core::readKeyword(c, s, "object_depth", p.object_depth, kObjectDepths);
   boxes = core::readKeyword(c, s, "boxes", boxes, kBoxes);
+  max_track_misses = c.read_int(s, "max_track_misses", max_track_misses);
+  if (max_track_misses < 0)
+    throw std::invalid_argument("max_track_misses = " + std::to_string(max_track_misses) +
+                                ": must be >= 0 (0: every confirmed track)");
 }
 
 void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -99,6 +103,9 @@ void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
       "tracks no detection took this frame (list the stage again after Tracking); "
       "tracked_detections: the detections again, each object cluster chosen by its track's "
       "depth (after Tracking; not the method)");
+  core::writeKey(c, s, "max_track_misses", max_track_misses,
+                 "predicted_tracks: only tracks coasting at most this many frames get a mask "
+                 "(0: every confirmed track; not the method)");
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
@@ -118,6 +125,7 @@ void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {
   for (size_t i = 0; i < frame.tracks.size(); ++i) {
     const auto& t = frame.tracks[i];
     if (t.state != core::TrackState::Confirmed || t.detection >= 0) continue;
+    if (options_.max_track_misses > 0 && t.misses > options_.max_track_misses) continue;
     core::Detection box;
     box.box = t.box;
     box.category = t.category;

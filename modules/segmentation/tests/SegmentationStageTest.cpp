@@ -121,3 +121,43 @@ TEST(SegmentationStage, TrackedDetectionsTakeTheClusterOfTheirTracksDepth) {
     EXPECT_EQ(frame.object_masks[0].track, 1);
   }
 }
+
+TEST(SegmentationStage, PredictedBoxesSegmentTheCoastingTracksUpToMaxTrackMisses) {
+  // Three confirmed tracks: one matched this frame (its detection's mask is made before
+  // Tracking), two coasting for 2 and 30 frames. The walker of the second has left the image
+  // long ago: its predicted box would take the wall.
+  core::Frame frame;
+  frame.detections_fresh = true;
+  frame.depth = cv::Mat(120, 160, CV_32FC1, cv::Scalar(5.0f));
+  frame.depth(cv::Rect(20, 30, 30, 90)).setTo(2.0f);
+  frame.tracks.resize(3);
+  for (int i = 0; i < 3; ++i) {
+    frame.tracks[i].id = 10 + i;
+    frame.tracks[i].state = core::TrackState::Confirmed;
+    frame.tracks[i].category = "person";
+  }
+  frame.tracks[0].detection = 0;
+  frame.tracks[0].box = cv::Rect2f(20, 20, 30, 100);
+  frame.tracks[1].misses = 2;
+  frame.tracks[1].box = cv::Rect2f(20, 20, 30, 100);
+  frame.tracks[2].misses = 30;
+  frame.tracks[2].box = cv::Rect2f(100, 20, 30, 100);
+  const auto masksOf = [&](const std::string& ini) {
+    segmentation::SegmentationStage stage;
+    stage.configure(core::IniConfig::fromText("[P]\nboxes = predicted_tracks\n" + ini), "P");
+    core::Frame f = frame;
+    stage.process(f);
+    std::vector<int> tracks;
+    for (const auto& m : f.object_masks) tracks.push_back(m.track);
+    return tracks;
+  };
+  EXPECT_EQ(masksOf(""), (std::vector<int>{1, 2})) << "every coasting track (the default)";
+  EXPECT_EQ(masksOf("max_track_misses = 3\n"), (std::vector<int>{1}));
+  segmentation::SegmentationStage stage;
+  try {
+    stage.configure(core::IniConfig::fromText("[P]\nmax_track_misses = -1\n"), "P");
+    FAIL() << "a negative max_track_misses accepted";
+  } catch (const core::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("max_track_misses"), std::string::npos) << e.what();
+  }
+}

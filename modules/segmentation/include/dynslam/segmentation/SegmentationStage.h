@@ -32,6 +32,11 @@ enum class SegmentedBoxes { Detections, PredictedTracks, TrackedDetections };
 struct SegmentationOptions : mrpt::config::CLoadableOptions {
   DepthThresholdParams params;
   SegmentedBoxes boxes = SegmentedBoxes::Detections;
+  /// predicted_tracks: only the tracks that missed at most this many detections in a row are
+  /// segmented (0: every confirmed track; not the method). A track coasting for long predicts a
+  /// box where its object no longer is (a walker who left the image), and its mask takes
+  /// whatever surface lies there.
+  int max_track_misses = 0;
 
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
