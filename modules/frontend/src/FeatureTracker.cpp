@@ -362,6 +362,7 @@ void FeatureTracker::rejectByFundamental(const core::Frame& frame,
 std::function<bool(const cv::Point2f&)> FeatureTracker::occlusionEdgeTest(
     const core::Frame& frame) const {
   if (params_.occlusion_edge.radius_px <= 0 || frame.depth.empty()) return {};
+  if (params_.occlusion_edge_objects_only && frame.object_masks.empty()) return {};
   cv::Mat nearer;  // empty: every reading may be the nearer surface
   if (params_.occlusion_edge_objects_only) {
     nearer = cv::Mat::zeros(frame.depth.size(), CV_8UC1);
