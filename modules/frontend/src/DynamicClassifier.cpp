@@ -286,13 +286,14 @@ void DynamicClassifier::process(core::Frame& frame) {
       const double sp = params_.camera.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
       const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
       const double var = (sp * sp + sq * sq) / (dt * dt);
+      const double sigma = std::sqrt(var);
       // Faster than a person moves, beyond its noise: a depth jump (max_nonrigid_flow_speed).
       if (params_.max_nonrigid_flow_speed > 0 && c.region->model == core::MotionModel::NonRigid &&
-          speed > params_.max_nonrigid_flow_speed + params_.speed_noise_sigmas * std::sqrt(var))
+          speed > params_.max_nonrigid_flow_speed + params_.speed_noise_sigmas * sigma)
         break;
       velocities[c.region->object_id].push_back(F / dt);
       cur[i].speed = speed;
-      cur[i].speed_sigma = std::sqrt(var);
+      cur[i].speed_sigma = sigma;
       velocityVar[c.region->object_id] += var;
       cameraVarSum[c.region->object_id] += cameraVarianceSince(o.frame) / (dt * dt);
       break;

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -31,6 +32,41 @@ cv::Point2d reproject(const cv::Point2f& pixel, double depth, const core::Camera
   const Eigen::Vector3d p((pixel.x - K.cx) / K.fx * depth, (pixel.y - K.cy) / K.fy * depth, depth);
   const Eigen::Vector3d q = T_world_to.inverse() * (T_world_from * p);
   return {K.fx * q.x() / q.z() + K.cx, K.fy * q.y() / q.z() + K.cy};
+}
+
+/// Runs `tracker` over every frame of `sim` (each frame given to `prepare` first, if set, and
+/// its features to `onFrame`, if set) and returns, for each continued track with depth in its
+/// previous frame that shows the background (label 0) in both frames, its distance (px) from
+/// where the true camera motion puts it.
+std::vector<double> backgroundTrackErrors(
+    const sim::Simulator& sim, FeatureTracker& tracker,
+    const std::function<void(frontend::testing::SimulatedFrame&)>& prepare = {},
+    const std::function<void(const frontend::testing::SimulatedFrame&,
+                             const std::vector<core::Feature>&)>& onFrame = {}) {
+  std::map<int64_t, core::Feature> previous;
+  sim::SimFrame previousTruth;
+  std::vector<double> errors;
+  for (size_t i = 0; i < sim.frameCount(); ++i) {
+    auto f = simulatedFrame(sim, i);
+    if (prepare) prepare(f);
+    const auto features = tracker.track(f.frame);
+    if (onFrame) onFrame(f, features);
+    for (const auto& feature : features) {
+      const auto it = previous.find(feature.id);
+      if (it == previous.end()) continue;
+      const auto& before = it->second;
+      if (before.depth <= 0 || labelAt(previousTruth, before.pixel) != 0 ||
+          labelAt(f.truth, feature.pixel) != 0)
+        continue;
+      const cv::Point2d expected = reproject(before.pixel, before.depth, sim.camera(),
+                                             previousTruth.T_world_camera, f.truth.T_world_camera);
+      errors.push_back(cv::norm(expected - cv::Point2d(feature.pixel)));
+    }
+    previous.clear();
+    for (const auto& feature : features) previous[feature.id] = feature;
+    previousTruth = f.truth;
+  }
+  return errors;
 }
 
 struct RunSummary {
@@ -62,27 +98,7 @@ RunSummary runTracker(const sim::Simulator& sim, FeatureTrackerParams params) {
 TEST(FeatureTrackerSim, StaticFeaturesLandWhereTheCameraMotionPutsThem) {
   const sim::Simulator sim(scenario("indoor_people_high", {"Scenario.duration=1"}));
   FeatureTracker tracker;
-  std::map<int64_t, core::Feature> previous;
-  sim::SimFrame previousTruth;
-  std::vector<double> errors;
-  for (size_t i = 0; i < sim.frameCount(); ++i) {
-    const auto f = simulatedFrame(sim, i);
-    const auto features = tracker.track(f.frame);
-    for (const auto& feature : features) {
-      const auto it = previous.find(feature.id);
-      if (it == previous.end()) continue;
-      const auto& before = it->second;
-      if (before.depth <= 0 || labelAt(previousTruth, before.pixel) != 0 ||
-          labelAt(f.truth, feature.pixel) != 0)
-        continue;
-      const cv::Point2d expected = reproject(before.pixel, before.depth, sim.camera(),
-                                             previousTruth.T_world_camera, f.truth.T_world_camera);
-      errors.push_back(cv::norm(expected - cv::Point2d(feature.pixel)));
-    }
-    previous.clear();
-    for (const auto& feature : features) previous[feature.id] = feature;
-    previousTruth = f.truth;
-  }
+  std::vector<double> errors = backgroundTrackErrors(sim, tracker);
   ASSERT_GT(errors.size(), 1000u) << "30 intervals with ~100 static features each";
   std::sort(errors.begin(), errors.end());
   const double med = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
@@ -268,31 +284,19 @@ TEST(FeatureTrackerSim, TracksBehindAnObjectsEdgeAreDroppedAndFewerSlideWithTheW
     params.max_features = 300;
     params.occlusion_edge.radius_px = radius;
     FeatureTracker tracker(params);
-    std::map<int64_t, core::Feature> previous;
-    sim::SimFrame previousTruth;
-    size_t background = 0, sliding = 0, behindEdge = 0;
-    for (size_t i = 0; i < sim.frameCount(); ++i) {
-      auto f = simulatedFrame(sim, i);
-      f.frame.object_masks = frontend::testing::truthMasks(f.truth);
-      const cv::Mat objects = f.truth.image.label > 0;
-      const auto features = tracker.track(f.frame);
-      for (const auto& feature : features) {
-        behindEdge += frontend::behindOcclusionEdge(f.frame.depth, feature.pixel,
-                                                    frontend::OcclusionEdgeParams{7}, objects);
-        const auto it = previous.find(feature.id);
-        if (it == previous.end() || it->second.depth <= 0 ||
-            labelAt(previousTruth, it->second.pixel) != 0 || labelAt(f.truth, feature.pixel) != 0)
-          continue;
-        const cv::Point2d expected =
-            reproject(it->second.pixel, it->second.depth, sim.camera(),
-                      previousTruth.T_world_camera, f.truth.T_world_camera);
-        ++background;
-        sliding += cv::norm(expected - cv::Point2d(feature.pixel)) > 2.0;
-      }
-      previous.clear();
-      for (const auto& feature : features) previous[feature.id] = feature;
-      previousTruth = f.truth;
-    }
+    size_t behindEdge = 0;
+    const auto errors = backgroundTrackErrors(
+        sim, tracker,
+        [](auto& f) { f.frame.object_masks = frontend::testing::truthMasks(f.truth); },
+        [&](const auto& f, const std::vector<core::Feature>& features) {
+          const cv::Mat objects = f.truth.image.label > 0;
+          for (const auto& feature : features)
+            behindEdge += frontend::behindOcclusionEdge(
+                f.frame.depth, feature.pixel, frontend::OcclusionEdgeParams{7}, objects);
+        });
+    const size_t background = errors.size();
+    const size_t sliding =
+        size_t(std::count_if(errors.begin(), errors.end(), [](double e) { return e > 2.0; }));
     std::cout << "radius " << radius << ": " << sliding << " of " << background
               << " background tracks off by > 2 px; " << behindEdge
               << " features within 7 px behind an object's edge\n";
