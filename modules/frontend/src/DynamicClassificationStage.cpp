@@ -23,6 +23,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
   p.still_feature_in_still_box =
       core::readBool(c, s, "still_feature_in_still_box", p.still_feature_in_still_box);
+  p.still_carried_outside_box =
+      core::readBool(c, s, "still_carried_outside_box", p.still_carried_outside_box);
   p.unmeasured_feature_by_depth =
       core::readBool(c, s, "unmeasured_feature_by_depth", p.unmeasured_feature_by_depth);
   p.moving_feature_speed = c.read_double(s, "moving_feature_speed", p.moving_feature_speed);
@@ -70,6 +72,10 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
   core::writeKey(c, s, "still_feature_in_still_box", p.still_feature_in_still_box,
                  "true: ... and so does one that was not static, inside the box of another "
                  "object judged not to move (not the method)");
+  core::writeKey(c, s, "still_carried_outside_box", p.still_carried_outside_box,
+                 "true: a feature on an object only by last frame's membership, outside its "
+                 "track's box and slower than still_feature_speed is static, off the object "
+                 "(not the method)");
   core::writeKey(c, s, "unmeasured_feature_by_depth", p.unmeasured_feature_by_depth,
                  "true: a feature with no scene flow yet in a moving object's mask is static "
                  "inside the box of an object judged not to move whose depth is nearer its own "

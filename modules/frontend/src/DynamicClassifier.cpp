@@ -158,6 +158,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     const Observation* previous = nullptr;  ///< the feature's point in the previous frame
     double speed = -1;  ///< |scene flow| / time over the window, m/s; < 0: not measured
     double speed_sigma = 0;  ///< its depth noise, m/s
+    bool carried_outside_box = false;  ///< membership carried over, pixel outside the track's box
   };
   std::vector<Current> cur(frame.features.size());
   std::vector<Eigen::Vector3d> bgPrev, bgCur;  // pairs outside every mask
@@ -200,10 +201,12 @@ void DynamicClassifier::process(core::Frame& frame) {
           mask->second->roi.contains({cvRound(f.pixel.x), cvRound(f.pixel.y)});
       if (last != objectOf_.end() && !contradicted) {
         const auto t = tracks.find(last->second);
-        if (t != tracks.end())
+        if (t != tracks.end()) {
           c.region =
               &maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model, {}, {}, 0.0})
                    .first->second;
+          c.carried_outside_box = !t->second->box.contains(f.pixel);
+        }
       }
     }
     f.object_id = c.region ? c.region->object_id : -1;
@@ -390,6 +393,13 @@ void DynamicClassifier::process(core::Frame& frame) {
                                    cur[i].has_point && cur[i].speed < 0 &&
                                    inStillObjectsBox(regions, lastDynamic_, region->object_id,
                                                      f.pixel, cur[i].P.z(), region->depth);
+    // still_carried_outside_box: nothing but last frame's membership puts it on the object.
+    if (params_.still_carried_outside_box && still && cur[i].carried_outside_box) {
+      f.object_id = -1;
+      nextObjectOf.erase(f.id);
+      nextStatic.insert(f.id);
+      continue;  // Static, and off the object
+    }
     if (!region || !dynamic[region->object_id] || stillAndWasStatic || unmeasuredOfStill) {
       nextStatic.insert(f.id);
       continue;  // Static

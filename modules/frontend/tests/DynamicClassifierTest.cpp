@@ -658,5 +658,66 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
   EXPECT_NE(messageOf("rigid_ray_gate = 0\n").find("rigid_ray_gate"), std::string::npos);
 }
 
+
+// A walker's mask that once spilled over background (here: its box grown by 60 px for one
+// frame, as a mask takes a wall within e of the walker) gives the new corners there the
+// walker's membership, and with no mask holding them after it carries over frame to frame. Their own
+// scene flow says they are still and they lie outside the walker's track box: with
+// still_carried_outside_box they are Static and off the walker. The walker's own features,
+// carried inside its box while its detection is missed (no mask on the last three frames),
+// stay dynamic.
+TEST(DynamicClassifier, StillFeaturesCarriedOutsideTheTracksBoxLeaveTheObject) {
+  auto run = [](bool leave) {
+    DynamicClassifierParams params;
+    params.still_feature_speed = 0.2;
+    params.still_carried_outside_box = leave;
+    const Scene scene;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    std::set<std::int64_t> grabbed;
+    for (int k = 0; k < 15; ++k) {
+      f = scene.frame(k);
+      for (size_t j = 0; j < f.tracks.size(); ++j) f.tracks[j].box = cv::Rect2f(f.object_masks[j].roi);
+      auto& walker = f.object_masks[0];
+      if (k >= 4)  // new corners from frame 4 on: no flow yet when the spilled mask takes them
+        for (auto& feat : f.features)
+          if (feat.id < 1000) feat.id += 500;
+      if (k == 4) {
+        walker.roi = cv::Rect(walker.roi.x, walker.roi.y, walker.roi.width + 60, walker.roi.height) &
+                     cv::Rect(0, 0, 640, 480);
+        walker.mask = cv::Mat(walker.roi.size(), CV_8UC1, cv::Scalar(255));
+      }
+      if (k >= 12) walker.valid = false;  // the detector misses the walker: its track coasts
+      classifier.process(f);
+      if (k == 4)
+        for (const auto& feat : f.features)
+          if (feat.id < 1000 && feat.object_id == 1) grabbed.insert(feat.id);
+    }
+    int grabbedSeen = 0, grabbedStatic = 0, grabbedOnWalker = 0, walker = 0, walkerDynamic = 0;
+    for (const auto& feat : f.features) {
+      if (feat.object_id > 1) continue;  // in another object's mask now: not carried
+      if (grabbed.count(feat.id)) {
+        ++grabbedSeen;
+        grabbedStatic += feat.feature_class == core::FeatureClass::Static;
+        grabbedOnWalker += feat.object_id == 1;
+      }
+      if (feat.id >= 1000 && feat.id < 2000) {
+        ++walker;
+        walkerDynamic += feat.feature_class != core::FeatureClass::Static;
+      }
+    }
+    EXPECT_GE(grabbedSeen, 3) << "the spilled mask took some background features";
+    EXPECT_GE(walker, 20);
+    EXPECT_EQ(walkerDynamic, walker) << "carried inside its box, the walker's own stay dynamic";
+    return std::make_tuple(grabbedSeen, grabbedStatic, grabbedOnWalker);
+  };
+  const auto [seenOff, staticOff, onWalkerOff] = run(false);
+  EXPECT_EQ(staticOff, 0) << "carried over, they took the walker's class";
+  EXPECT_EQ(onWalkerOff, seenOff);
+  const auto [seenOn, staticOn, onWalkerOn] = run(true);
+  EXPECT_EQ(staticOn, seenOn) << "still and outside the walker's box: Static";
+  EXPECT_EQ(onWalkerOn, 0) << "and no longer the walker's";
+}
+
 }  // namespace
 }  // namespace dynslam::frontend
