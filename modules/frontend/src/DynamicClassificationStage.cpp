@@ -25,6 +25,8 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
       core::readBool(c, s, "still_feature_in_still_box", p.still_feature_in_still_box);
   p.still_carried_outside_box =
       core::readBool(c, s, "still_carried_outside_box", p.still_carried_outside_box);
+  p.still_above_feet_fraction =
+      c.read_double(s, "still_above_feet_fraction", p.still_above_feet_fraction);
   p.unmeasured_feature_by_depth =
       core::readBool(c, s, "unmeasured_feature_by_depth", p.unmeasured_feature_by_depth);
   p.moving_feature_speed = c.read_double(s, "moving_feature_speed", p.moving_feature_speed);
@@ -72,6 +74,10 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
   core::writeKey(c, s, "still_feature_in_still_box", p.still_feature_in_still_box,
                  "true: ... and so does one that was not static, inside the box of another "
                  "object judged not to move (not the method)");
+  core::writeKey(c, s, "still_above_feet_fraction", p.still_above_feet_fraction,
+                 "a feature slower than still_feature_speed in a non-rigid object's mask, above "
+                 "this fraction of its box from the bottom, is static: a walker's only still "
+                 "parts are its planted feet (not the method; 0: off)");
   core::writeKey(c, s, "still_carried_outside_box", p.still_carried_outside_box,
                  "true: a feature on an object only by last frame's membership, outside its "
                  "track's box and slower than still_feature_speed is static, off the object "

@@ -393,6 +393,15 @@ void DynamicClassifier::process(core::Frame& frame) {
                                    cur[i].has_point && cur[i].speed < 0 &&
                                    inStillObjectsBox(regions, lastDynamic_, region->object_id,
                                                      f.pixel, cur[i].P.z(), region->depth);
+    // still_above_feet_fraction: a walker's only still parts are its planted feet.
+    const bool stillAboveFeet =
+        params_.still_above_feet_fraction > 0 && still && region && !region->mask.empty() &&
+        region->model == core::MotionModel::NonRigid &&
+        f.pixel.y < region->roi.y + (1 - params_.still_above_feet_fraction) * region->roi.height;
+    if (stillAboveFeet) {
+      nextStatic.insert(f.id);
+      continue;  // Static
+    }
     // still_carried_outside_box: nothing but last frame's membership puts it on the object.
     if (params_.still_carried_outside_box && still && cur[i].carried_outside_box) {
       f.object_id = -1;

@@ -719,5 +719,65 @@ TEST(DynamicClassifier, StillFeaturesCarriedOutsideTheTracksBoxLeaveTheObject) {
   EXPECT_EQ(onWalkerOn, 0) << "and no longer the walker's";
 }
 
+// A walker's mask holds every box pixel within e of its depth: a wall just behind it, above its
+// feet, becomes the walker's. Static world points seen inside the walker's box from frame 10 on:
+// "wall" ones in the upper part of the box, "foot" ones in its bottom tenth (a planted foot is
+// still too). With still_above_feet_fraction = 0.25 the wall's are Static once their flow says
+// they are still; the feet's, and the walker's own moving features, stay dynamic.
+TEST(DynamicClassifier, StillFeaturesAboveAWalkersFeetAreStatic) {
+  const Scene scene;
+  const Eigen::Isometry3d T_w_c12 = cameraPose(12 * kDt);
+  const cv::Rect box12 = scene.frame(12).object_masks[0].roi;
+  std::vector<std::pair<std::int64_t, Eigen::Vector3d>> wall, feet;  // id, world point
+  for (int i = 0; i < 6; ++i) {
+    const double u = box12.x + box12.width * (0.4 + 0.04 * i);
+    const auto at = [&](double v) {
+      return T_w_c12 * Eigen::Vector3d((u - kCamera.cx) / kCamera.fx * 3.1,
+                                       (v - kCamera.cy) / kCamera.fy * 3.1, 3.1);
+    };
+    wall.emplace_back(7000 + i, at(box12.y + box12.height * (0.15 + 0.08 * i)));
+    feet.emplace_back(8000 + i, at(box12.y + box12.height * 0.95));
+  }
+  auto run = [&](double fraction) {
+    DynamicClassifierParams params;
+    params.still_feature_speed = 0.2;
+    params.still_above_feet_fraction = fraction;
+    DynamicClassifier classifier(params);
+    core::Frame f;
+    for (int k = 0; k < 15; ++k) {
+      f = scene.frame(k);
+      const Eigen::Isometry3d T_c_w = cameraPose(f.t).inverse();
+      if (k >= 10)
+        for (const auto& group : {wall, feet})
+          for (const auto& [id, X] : group) {
+            const Eigen::Vector3d P = T_c_w * X;
+            core::Feature feat;
+            feat.id = id;
+            feat.pixel = cv::Point2f(float(kCamera.fx * P.x() / P.z() + kCamera.cx),
+                                     float(kCamera.fy * P.y() / P.z() + kCamera.cy));
+            feat.depth = float(P.z());
+            f.features.push_back(feat);
+          }
+      classifier.process(f);
+    }
+    std::map<std::string, std::pair<int, int>> seen;  // group -> features on the walker, Static
+    for (const auto& feat : f.features) {
+      const std::string group = feat.id >= 8000 ? "feet" : feat.id >= 7000 ? "wall"
+                                : feat.id >= 1000 && feat.id < 2000 ? "walker" : "";
+      if (group.empty() || feat.object_id != 1) continue;
+      ++seen[group].first;
+      seen[group].second += feat.feature_class == core::FeatureClass::Static;
+    }
+    EXPECT_GE(seen["wall"].first, 4) << "the walker's mask holds the wall behind it";
+    EXPECT_GE(seen["feet"].first, 4);
+    EXPECT_EQ(seen["feet"].second, 0) << "still, but where its feet are: the walker's";
+    EXPECT_EQ(seen["walker"].second, 0) << "the walker's own features move";
+    return seen["wall"];
+  };
+  EXPECT_EQ(run(0).second, 0) << "off: the wall in the walker's mask takes its class";
+  const auto on = run(0.25);
+  EXPECT_EQ(on.second, on.first) << "still above its feet: Static";
+}
+
 }  // namespace
 }  // namespace dynslam::frontend
