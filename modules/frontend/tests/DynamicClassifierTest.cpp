@@ -658,11 +658,10 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
   EXPECT_NE(messageOf("rigid_ray_gate = 0\n").find("rigid_ray_gate"), std::string::npos);
 }
 
-
 // A walker's mask that once spilled over background (here: its box grown by 60 px for one
 // frame, as a mask takes a wall within e of the walker) gives the new corners there the
-// walker's membership, and with no mask holding them after it carries over frame to frame. Their own
-// scene flow says they are still and they lie outside the walker's track box: with
+// walker's membership, and with no mask holding them after it carries over frame to frame.
+// Their own scene flow says they are still and they lie outside the walker's track box: with
 // still_carried_outside_box they are Static and off the walker. The walker's own features,
 // carried inside its box while its detection is missed (no mask on the last three frames),
 // stay dynamic.
@@ -677,14 +676,16 @@ TEST(DynamicClassifier, StillFeaturesCarriedOutsideTheTracksBoxLeaveTheObject) {
     std::set<std::int64_t> grabbed;
     for (int k = 0; k < 15; ++k) {
       f = scene.frame(k);
-      for (size_t j = 0; j < f.tracks.size(); ++j) f.tracks[j].box = cv::Rect2f(f.object_masks[j].roi);
+      for (size_t j = 0; j < f.tracks.size(); ++j)
+        f.tracks[j].box = cv::Rect2f(f.object_masks[j].roi);
       auto& walker = f.object_masks[0];
       if (k >= 4)  // new corners from frame 4 on: no flow yet when the spilled mask takes them
         for (auto& feat : f.features)
           if (feat.id < 1000) feat.id += 500;
       if (k == 4) {
-        walker.roi = cv::Rect(walker.roi.x, walker.roi.y, walker.roi.width + 60, walker.roi.height) &
-                     cv::Rect(0, 0, 640, 480);
+        walker.roi =
+            cv::Rect(walker.roi.x, walker.roi.y, walker.roi.width + 60, walker.roi.height) &
+            cv::Rect(0, 0, 640, 480);
         walker.mask = cv::Mat(walker.roi.size(), CV_8UC1, cv::Scalar(255));
       }
       if (k >= 12) walker.valid = false;  // the detector misses the walker: its track coasts
@@ -762,8 +763,10 @@ TEST(DynamicClassifier, StillFeaturesAboveAWalkersFeetAreStatic) {
     }
     std::map<std::string, std::pair<int, int>> seen;  // group -> features on the walker, Static
     for (const auto& feat : f.features) {
-      const std::string group = feat.id >= 8000 ? "feet" : feat.id >= 7000 ? "wall"
-                                : feat.id >= 1000 && feat.id < 2000 ? "walker" : "";
+      const std::string group = feat.id >= 8000                     ? "feet"
+                                : feat.id >= 7000                   ? "wall"
+                                : feat.id >= 1000 && feat.id < 2000 ? "walker"
+                                                                    : "";
       if (group.empty() || feat.object_id != 1) continue;
       ++seen[group].first;
       seen[group].second += feat.feature_class == core::FeatureClass::Static;
