@@ -9,7 +9,8 @@ RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, Dynamic
   const bool full = handling == DynamicHandling::Full;
   for (const auto& f : features) {
     const Eigen::Vector2d px(f.pixel.x, f.pixel.y);
-    const FeatureObservation o{f.id, px, f.depth > 0 ? double(f.depth) : 0.0};
+    // A reading beside a depth edge (Feature::depth_at_edge) is left out: it can switch surfaces.
+    const FeatureObservation o{f.id, px, f.depth > 0 && !f.depth_at_edge ? double(f.depth) : 0.0};
     if (handling == DynamicHandling::None || f.feature_class == core::FeatureClass::Static) {
       out.landmarks.push_back(o);
       out.pixels[f.id] = px;

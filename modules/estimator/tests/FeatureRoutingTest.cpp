@@ -63,3 +63,15 @@ TEST(FeatureRouting, FullGivesTheMovingOnesTheirFactorsAndListsThemAsMoving) {
   EXPECT_TRUE(off.rigid_objects.empty());
   EXPECT_EQ(off.moving, (std::vector<std::int64_t>{3, 4})) << "moving whatever factors they get";
 }
+
+TEST(FeatureRouting, AReadingBesideADepthEdgeIsLeftOut) {
+  auto features = oneOfEachClass();
+  features[0].depth_at_edge = true;
+  features[2].depth_at_edge = true;
+  const auto r = routeFeatures(features, DynamicHandling::Full, true, true);
+  ASSERT_EQ(r.landmarks.size(), 2u);
+  EXPECT_EQ(r.landmarks[0].depth, 0.0) << "the pixel still counts, its reading does not";
+  EXPECT_EQ(r.landmarks[1].depth, 2.0);
+  ASSERT_EQ(r.nonrigid.size(), 1u);
+  EXPECT_EQ(r.nonrigid[0].depth, 0.0);
+}

@@ -53,6 +53,7 @@ void validate(const FeatureTrackerParams& p) {
           ">= 0");
   const auto& e = p.occlusion_edge;
   require(e.radius_px >= 0, "occlusion_edge_radius_px", e.radius_px, ">= 0");
+  require(p.depth_edge_radius_px >= 0, "depth_edge_radius_px", p.depth_edge_radius_px, ">= 0");
   require(e.min_gap_m > 0, "occlusion_edge_min_gap_m", e.min_gap_m, "> 0");
   require(e.gap_ratio >= 0, "occlusion_edge_gap_ratio", e.gap_ratio, ">= 0");
   require(p.fundamental_threshold_px > 0, "fundamental_threshold_px", p.fundamental_threshold_px,
@@ -167,6 +168,8 @@ std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
     pruneAndDetect(gray, behindEdge);  // new corners are not placed there either
   }
 
+  OcclusionEdgeParams depthEdge = params_.occlusion_edge;  // its gap, this radius
+  depthEdge.radius_px = params_.depth_edge_radius_px;
   std::vector<core::Feature> out;
   out.reserve(tracks_.size());
   for (const auto& t : tracks_) {
@@ -174,6 +177,8 @@ std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
     f.id = t.id;
     f.pixel = t.pixel;
     f.depth = depthAt(frame.depth, t.pixel);
+    f.depth_at_edge = params_.depth_edge_radius_px > 0 &&
+                      nearDepthEdge(frame.depth, t.pixel, depthEdge);
     f.track_length = t.length;
     out.push_back(f);
   }

@@ -43,6 +43,7 @@ void FeatureTrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
   FT_READ(double, t.occlusion_edge.gap_ratio, "occlusion_edge_gap_ratio");
   t.occlusion_edge_objects_only =
       core::readBool(c, s, "occlusion_edge_objects_only", t.occlusion_edge_objects_only);
+  FT_READ(int, t.depth_edge_radius_px, "depth_edge_radius_px");
   t.flow_init = flowInitFromString(c.read_string(s, "flow_init", toString(t.flow_init)));
   t.fundamental_ransac = core::readBool(c, s, "fundamental_ransac", t.fundamental_ransac);
   FT_READ(double, t.fundamental_threshold_px, "fundamental_threshold_px");
@@ -92,6 +93,9 @@ void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
            "occluding edge");
   FT_WRITE(t.occlusion_edge.gap_ratio, "occlusion_edge_gap_ratio",
            "the occluding edge's depth gap relative to the pixel's depth");
+  FT_WRITE(t.depth_edge_radius_px, "depth_edge_radius_px",
+           "not the method: px; the estimator leaves out a feature's depth where a reading "
+           "nearer or farther by the occlusion edge's gap, or none, lies this close (0: off)");
   FT_WRITE(t.occlusion_edge_objects_only, "occlusion_edge_objects_only",
            "only the object masks' readings count as the nearer surface (false: any reading)");
   core::writeKey(c, s, "flow_init", toString(t.flow_init),

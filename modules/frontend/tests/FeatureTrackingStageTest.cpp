@@ -64,7 +64,7 @@ TEST(FeatureTrackingStage, EveryKeyIsWrittenWithAComment) {
   mrpt::config::CConfigFileMemory ini;
   options.saveToConfigFile(ini, "FeatureTracking");
   const auto keys = core::knownKeys(options);
-  EXPECT_EQ(keys.size(), 26u);
+  EXPECT_EQ(keys.size(), 27u);
   const std::string text = ini.getContent();
   std::istringstream lines(text);
   size_t commented = 0;
@@ -98,6 +98,9 @@ TEST(FeatureTrackingStage, BadInputIsAnErrorNamingTheKey) {
   EXPECT_NE(errorOf("[FeatureTracking]\nocclusion_edge_radius_px = -1\n")
                 .find("occlusion_edge_radius_px"),
             std::string::npos);
+  EXPECT_NE(
+      errorOf("[FeatureTracking]\ndepth_edge_radius_px = -2\n").find("depth_edge_radius_px"),
+      std::string::npos);
   EXPECT_NE(errorOf("[FeatureTracking]\nocclusion_edge_min_gap_m = 0\n")
                 .find("occlusion_edge_min_gap_m"),
             std::string::npos);

@@ -64,3 +64,22 @@ TEST(OcclusionEdge, OnlyTheNearerReadingsTheMaskHoldsCount) {
   object.rowRange(0, 50).colRange(90, 100).setTo(255);
   EXPECT_FALSE(behindOcclusionEdge(depth, {104, 60}, radius7(), object)) << "10 rows above";
 }
+
+// nearDepthEdge: either side of the edge, and beside a missing reading, within the radius.
+TEST(OcclusionEdge, ADepthEdgeIsNearOnEitherSideAndBesideMissingReadings) {
+  const cv::Mat depth = wallWithNearSurface(2.0f, 1.5f);
+  EXPECT_TRUE(dynslam::frontend::nearDepthEdge(depth, {106, 60}, radius7())) << "behind it";
+  EXPECT_TRUE(dynslam::frontend::nearDepthEdge(depth, {94, 60}, radius7())) << "in front of it";
+  EXPECT_FALSE(dynslam::frontend::nearDepthEdge(depth, {108, 60}, radius7())) << "8 px away";
+  EXPECT_FALSE(dynslam::frontend::nearDepthEdge(depth, {91, 60}, radius7()));
+  EXPECT_FALSE(dynslam::frontend::nearDepthEdge(depth, {106, 60}, OcclusionEdgeParams{}))
+      << "radius 0: off";
+  cv::Mat holes(120, 200, CV_32FC1, cv::Scalar(2.0f));
+  holes.at<float>(60, 150) = 0;
+  holes.at<float>(60, 50) = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(dynslam::frontend::nearDepthEdge(holes, {145, 62}, radius7())) << "beside a hole";
+  EXPECT_TRUE(dynslam::frontend::nearDepthEdge(holes, {55, 60}, radius7())) << "beside a NaN";
+  EXPECT_FALSE(dynslam::frontend::nearDepthEdge(holes, {150, 60}, radius7()))
+      << "no reading of its own: nothing to leave out";
+  EXPECT_FALSE(dynslam::frontend::nearDepthEdge(holes, {100, 60}, radius7()));
+}

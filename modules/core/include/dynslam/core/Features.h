@@ -22,6 +22,10 @@ struct Feature {
   std::int64_t id = -1;  ///< stable while the corner is tracked, never reused in a run
   cv::Point2f pixel;     ///< colour-image pixel (x right, y down)
   float depth = 0;       ///< metres along the optical axis from the depth image; 0 = none
+  /// The depth image holds an edge (a reading nearer or farther by the gap, or none) within
+  /// FeatureTracking's depth_edge_radius_px: the estimator leaves this reading out (not the
+  /// method; the front-end still uses it).
+  bool depth_at_edge = false;
   int track_length = 1;  ///< frames this corner has been tracked, this one included
   FeatureClass feature_class = FeatureClass::Static;
   int object_id = -1;    ///< Track::id of the object whose mask holds it; -1 = background

@@ -76,6 +76,11 @@ struct FeatureTrackerParams {
   /// are many of a static room's (7-Scenes, RGB-D only: APE 0.0278 -> 0.0309 m with every
   /// edge, radius 11).
   bool occlusion_edge_objects_only = true;
+  /// Not the method: a feature with a depth edge (nearer or farther by the occlusion edge's
+  /// gap, or no reading) within this many pixels gets Feature::depth_at_edge, and the
+  /// estimator leaves its reading out; 0: off. As the track moves by a fraction of a pixel its
+  /// reading can switch surfaces.
+  int depth_edge_radius_px = 0;
   FlowInit flow_init = FlowInit::Gyro;
   bool fundamental_ransac = true;  ///< RANSAC on F over the static candidates
   /// Max distance to the epipolar line, pixels. 1.0 (VINS-Fusion at focal 460 is ~1.2 here)

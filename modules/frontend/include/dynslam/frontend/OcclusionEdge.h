@@ -27,4 +27,11 @@ struct OcclusionEdgeParams {
 bool behindOcclusionEdge(const cv::Mat& depth, const cv::Point2f& pixel,
                          const OcclusionEdgeParams& params, const cv::Mat& nearer = {});
 
+/// Whether the window round `pixel` holds a depth edge: a reading nearer or farther than the
+/// pixel's own by more than the gap, or none (an edge's shadow or the range's end). False where
+/// the pixel has no reading or radius_px <= 0. A reading there may belong to either surface as
+/// the tracked pixel moves by a fraction of a pixel.
+bool nearDepthEdge(const cv::Mat& depth, const cv::Point2f& pixel,
+                   const OcclusionEdgeParams& params);
+
 }  // namespace dynslam::frontend
