@@ -4,40 +4,57 @@
 #include <cmath>
 
 namespace dynslam::frontend {
+namespace {
 
-bool behindOcclusionEdge(const cv::Mat& depth, const cv::Point2f& pixel,
-                         const OcclusionEdgeParams& params, const cv::Mat& nearer) {
-  const int r = params.radius_px;
-  const int row = cvRound(pixel.y), col = cvRound(pixel.x);
-  if (r <= 0 || depth.empty() || row < 0 || col < 0 || row >= depth.rows || col >= depth.cols)
-    return false;
+/// The pixel's own valid reading (0: none, outside the image, or radius <= 0), and its
+/// row / column.
+float ownReading(const cv::Mat& depth, const cv::Point2f& pixel, int radius, int& row, int& col) {
+  row = cvRound(pixel.y);
+  col = cvRound(pixel.x);
+  if (radius <= 0 || depth.empty() || row < 0 || col < 0 || row >= depth.rows || col >= depth.cols)
+    return 0;
   const float z = depth.at<float>(row, col);
-  if (!(std::isfinite(z) && z > 0)) return false;
-  const float limit = z - float(std::max(params.min_gap_m, params.gap_ratio * z));
-  for (int y = std::max(0, row - r); y <= std::min(depth.rows - 1, row + r); ++y) {
+  return std::isfinite(z) && z > 0 ? z : 0;
+}
+
+/// Whether `test(reading, y, x)` holds for a reading of the window round (row, col).
+template <class Test>
+bool anyInWindow(const cv::Mat& depth, int row, int col, int radius, Test test) {
+  for (int y = std::max(0, row - radius); y <= std::min(depth.rows - 1, row + radius); ++y) {
     const auto* d = depth.ptr<float>(y);
-    const auto* m = nearer.empty() ? nullptr : nearer.ptr<uint8_t>(y);
-    for (int x = std::max(0, col - r); x <= std::min(depth.cols - 1, col + r); ++x)
-      if (d[x] > 0 && d[x] < limit && (!m || m[x])) return true;  // NaN fails both comparisons
+    for (int x = std::max(0, col - radius); x <= std::min(depth.cols - 1, col + radius); ++x)
+      if (test(d[x], y, x)) return true;
   }
   return false;
 }
 
+float gapAt(float z, const OcclusionEdgeParams& params) {
+  return float(std::max(params.min_gap_m, params.gap_ratio * z));
+}
+
+}  // namespace
+
+bool behindOcclusionEdge(const cv::Mat& depth, const cv::Point2f& pixel,
+                         const OcclusionEdgeParams& params, const cv::Mat& nearer) {
+  int row = 0, col = 0;
+  const float z = ownReading(depth, pixel, params.radius_px, row, col);
+  if (!(z > 0)) return false;
+  const float limit = z - gapAt(z, params);
+  return anyInWindow(depth, row, col, params.radius_px, [&](float d, int y, int x) {
+    // NaN fails both comparisons.
+    return d > 0 && d < limit && (nearer.empty() || nearer.at<uint8_t>(y, x) != 0);
+  });
+}
+
 bool nearDepthEdge(const cv::Mat& depth, const cv::Point2f& pixel,
                    const OcclusionEdgeParams& params) {
-  const int r = params.radius_px;
-  const int row = cvRound(pixel.y), col = cvRound(pixel.x);
-  if (r <= 0 || depth.empty() || row < 0 || col < 0 || row >= depth.rows || col >= depth.cols)
-    return false;
-  const float z = depth.at<float>(row, col);
-  if (!(std::isfinite(z) && z > 0)) return false;
-  const float gap = float(std::max(params.min_gap_m, params.gap_ratio * z));
-  for (int y = std::max(0, row - r); y <= std::min(depth.rows - 1, row + r); ++y) {
-    const auto* d = depth.ptr<float>(y);
-    for (int x = std::max(0, col - r); x <= std::min(depth.cols - 1, col + r); ++x)
-      if (!(d[x] > 0) || !std::isfinite(d[x]) || std::abs(d[x] - z) > gap) return true;
-  }
-  return false;
+  int row = 0, col = 0;
+  const float z = ownReading(depth, pixel, params.radius_px, row, col);
+  if (!(z > 0)) return false;
+  const float gap = gapAt(z, params);
+  return anyInWindow(depth, row, col, params.radius_px, [&](float d, int, int) {
+    return !(d > 0) || !std::isfinite(d) || std::abs(d - z) > gap;
+  });
 }
 
 }  // namespace dynslam::frontend
