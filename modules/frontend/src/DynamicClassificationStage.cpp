@@ -74,14 +74,14 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
   core::writeKey(c, s, "still_feature_in_still_box", p.still_feature_in_still_box,
                  "true: ... and so does one that was not static, inside the box of another "
                  "object judged not to move (not the method)");
-  core::writeKey(c, s, "still_above_feet_fraction", p.still_above_feet_fraction,
-                 "a feature slower than still_feature_speed in a non-rigid object's mask, above "
-                 "this fraction of its box from the bottom, is static: a walker's only still "
-                 "parts are its planted feet (not the method; 0: off)");
   core::writeKey(c, s, "still_carried_outside_box", p.still_carried_outside_box,
                  "true: a feature on an object only by last frame's membership, outside its "
                  "track's box and slower than still_feature_speed is static, off the object "
                  "(not the method)");
+  core::writeKey(c, s, "still_above_feet_fraction", p.still_above_feet_fraction,
+                 "a feature slower than still_feature_speed in a non-rigid object's mask, above "
+                 "this fraction of its box from the bottom, is static: a walker's only still "
+                 "parts are its planted feet (not the method; 0: off)");
   core::writeKey(c, s, "unmeasured_feature_by_depth", p.unmeasured_feature_by_depth,
                  "true: a feature with no scene flow yet in a moving object's mask is static "
                  "inside the box of an object judged not to move whose depth is nearer its own "
@@ -153,6 +153,9 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
     fail("speed_noise_sigmas", std::to_string(p.speed_noise_sigmas), "must be >= 0");
   if (!(p.still_feature_speed >= 0))
     fail("still_feature_speed", std::to_string(p.still_feature_speed), "must be >= 0");
+  if (!(p.still_above_feet_fraction >= 0 && p.still_above_feet_fraction < 1))
+    fail("still_above_feet_fraction", std::to_string(p.still_above_feet_fraction),
+         "must be in [0, 1)");
   if (!(p.moving_feature_speed >= 0))
     fail("moving_feature_speed", std::to_string(p.moving_feature_speed), "must be >= 0");
   if (!(p.moving_feature_max_speed > p.moving_feature_speed))

@@ -398,10 +398,6 @@ void DynamicClassifier::process(core::Frame& frame) {
         params_.still_above_feet_fraction > 0 && still && region && !region->mask.empty() &&
         region->model == core::MotionModel::NonRigid &&
         f.pixel.y < region->roi.y + (1 - params_.still_above_feet_fraction) * region->roi.height;
-    if (stillAboveFeet) {
-      nextStatic.insert(f.id);
-      continue;  // Static
-    }
     // still_carried_outside_box: nothing but last frame's membership puts it on the object.
     if (params_.still_carried_outside_box && still && cur[i].carried_outside_box) {
       f.object_id = -1;
@@ -409,7 +405,8 @@ void DynamicClassifier::process(core::Frame& frame) {
       nextStatic.insert(f.id);
       continue;  // Static, and off the object
     }
-    if (!region || !dynamic[region->object_id] || stillAndWasStatic || unmeasuredOfStill) {
+    if (!region || !dynamic[region->object_id] || stillAndWasStatic || unmeasuredOfStill ||
+        stillAboveFeet) {
       nextStatic.insert(f.id);
       continue;  // Static
     }

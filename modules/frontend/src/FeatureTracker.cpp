@@ -177,8 +177,7 @@ std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
     f.id = t.id;
     f.pixel = t.pixel;
     f.depth = depthAt(frame.depth, t.pixel);
-    f.depth_at_edge = params_.depth_edge_radius_px > 0 &&
-                      nearDepthEdge(frame.depth, t.pixel, depthEdge);
+    f.depth_at_edge = nearDepthEdge(frame.depth, t.pixel, depthEdge);  // radius 0: false
     f.track_length = t.length;
     out.push_back(f);
   }

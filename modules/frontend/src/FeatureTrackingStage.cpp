@@ -93,11 +93,11 @@ void FeatureTrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
            "occluding edge");
   FT_WRITE(t.occlusion_edge.gap_ratio, "occlusion_edge_gap_ratio",
            "the occluding edge's depth gap relative to the pixel's depth");
+  FT_WRITE(t.occlusion_edge_objects_only, "occlusion_edge_objects_only",
+           "only the object masks' readings count as the nearer surface (false: any reading)");
   FT_WRITE(t.depth_edge_radius_px, "depth_edge_radius_px",
            "not the method: px; the estimator leaves out a feature's depth where a reading "
            "nearer or farther by the occlusion edge's gap, or none, lies this close (0: off)");
-  FT_WRITE(t.occlusion_edge_objects_only, "occlusion_edge_objects_only",
-           "only the object masks' readings count as the nearer surface (false: any reading)");
   core::writeKey(c, s, "flow_init", toString(t.flow_init),
           "KLT start: gyro (rotation K R K^-1; previous_motion without gyro samples), "
           "previous_motion (constant velocity per point) or none");

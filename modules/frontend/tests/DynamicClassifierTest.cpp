@@ -656,6 +656,8 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
             std::string::npos);
   EXPECT_NE(messageOf("rigid_pixel_sigma = -0.3\n").find("rigid_pixel_sigma"), std::string::npos);
   EXPECT_NE(messageOf("rigid_ray_gate = 0\n").find("rigid_ray_gate"), std::string::npos);
+  EXPECT_NE(messageOf("still_above_feet_fraction = 1\n").find("still_above_feet_fraction"),
+            std::string::npos);
 }
 
 // A walker's mask that once spilled over background (here: its box grown by 60 px for one
