@@ -188,12 +188,19 @@ BoxMeasurement KalmanBoxTracker::measurementFor(Tracked& tr, const cv::Rect2f& b
   // towards the camera, then away) soon differs from it by more than the gate, which then held
   // the depth on the wrong side until the track was lost (bench-tracking, true depth, seed 4).
   const double reference = tr.last_depth > 0 ? tr.last_depth : predicted;
-  const bool gated = params_.depth_gate > 0 && depth > 0 && reference > 0 &&
-                     tr.track.state == core::TrackState::Confirmed &&
-                     std::abs(depth - reference) > params_.depth_gate * reference &&
-                     tr.depth_gated < params_.depth_gate_frames;
+  // depth_gate_speed: how far the person may have walked since the track last took a depth.
+  const double walked =
+      tr.last_depth > 0 ? params_.depth_gate_speed * (last_t_ - tr.last_depth_t) : 0.0;
+  const bool gated =
+      params_.depth_gate > 0 && depth > 0 && reference > 0 &&
+      tr.track.state == core::TrackState::Confirmed &&
+      std::abs(depth - reference) > std::max(params_.depth_gate * reference, walked) &&
+      tr.depth_gated < params_.depth_gate_frames;
   tr.depth_gated = gated ? tr.depth_gated + 1 : 0;
-  if (depth > 0 && !gated) tr.last_depth = depth;
+  if (depth > 0 && !gated) {
+    tr.last_depth = depth;
+    tr.last_depth_t = last_t_;
+  }
   BoxMeasurement z = boxMeasurement(box, gated ? 0.0 : depth);
   R = measurementNoise(params_.noise, z);        // a gated depth: the variance of an unknown one
   if (!(depth > 0) || gated) z(kD) = predicted;  // no depth, or held: leave d as it is
@@ -559,6 +566,7 @@ void KalmanBoxTracker::startTrack(const BoxObservation& observation, int index) 
   Tracked t{core::Track{}, KalmanBoxFilter(initialState(z), initialCovariance(params_.noise, z))};
   t.track.id = next_id_++;
   t.last_depth = observation.depth;
+  t.last_depth_t = last_t_;
   t.track.state = params_.min_hits <= 1 ? core::TrackState::Confirmed : core::TrackState::Tentative;
   t.track.category = observation.category;
   t.track.model = observation.model;

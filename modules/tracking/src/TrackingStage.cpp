@@ -43,6 +43,7 @@ void TrackingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
       core::readBool(c, s, "alternative_depth_tracks", t.alternative_depth_tracks);
   TRACKING_READ(double, t.depth_gate, "depth_gate");
   TRACKING_READ(int, t.depth_gate_frames, "depth_gate_frames");
+  TRACKING_READ(double, t.depth_gate_speed, "depth_gate_speed");
   TRACKING_READ(double, t.innovation_gate, "innovation_gate");
   TRACKING_READ(int, t.revival_takes_identity, "revival_takes_identity");
   TRACKING_READ(double, n.meas_center_px, "meas_center_px");
@@ -101,6 +102,9 @@ void TrackingOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "last depth it took (the box still counts; not the method)");
   TRACKING_WRITE(t.depth_gate_frames, "depth_gate_frames",
                  "frames in a row depth_gate may hold a track's depth");
+  TRACKING_WRITE(t.depth_gate_speed, "depth_gate_speed",
+                 "m/s, 0 = off; depth_gate also lets through a depth a person walking this fast "
+                 "could have reached since the track last took one (not the method)");
   TRACKING_WRITE(t.innovation_gate, "innovation_gate",
                  "0 = off; refuse a pair whose box centre's squared Mahalanobis distance from "
                  "the prediction exceeds this (chi-square, 2 dof; not the method)");
@@ -149,6 +153,10 @@ void TrackingStage::configure(const core::IniConfig& cfg, const std::string& sec
     throw core::ConfigError("[" + section + "] revival_takes_identity = " +
                             std::to_string(t.revival_takes_identity) + " in " + cfg.source() +
                             ": must be >= 0 (views; 0: off)");
+  if (!(t.depth_gate_speed >= 0))
+    throw core::ConfigError("[" + section +
+                            "] depth_gate_speed = " + std::to_string(t.depth_gate_speed) + " in " +
+                            cfg.source() + ": must be >= 0 (m/s; 0: off)");
   if (t.depth_gate_frames < 0)
     throw core::ConfigError("[" + section +
                             "] depth_gate_frames = " + std::to_string(t.depth_gate_frames) +

@@ -349,6 +349,39 @@ TEST(TrackingKalmanBoxTracker, DepthGateFollowsAPersonWhoTurnsRound) {
   }
 }
 
+TEST(TrackingKalmanBoxTracker, DepthGateSpeedLetsAReturningTrackTakeItsPersonsNewDepth) {
+  // A person at 2.2 m, confirmed, is hidden for 10 frames (1/3 s) and walks 0.5 m towards the
+  // camera meanwhile: it comes back at 1.7 m, 23 % nearer than the depth its track last took.
+  // The box alone still matches (depth IoU 0.77). The gate (0.15) held the old depth and the
+  // track's depth stayed 0.5 m off; with depth_gate_speed 1.5 m/s, 0.55 m may have been walked
+  // in those 11 frames, so the track takes 1.7 m. On consecutive frames the speed allows 5 cm,
+  // under the gate's 15 %: a surface flip there is still held.
+  for (const double speed : {0.0, 1.5}) {
+    KalmanBoxTrackerParams params;
+    params.min_hits = 1;
+    params.rho_min = 0.5;
+    params.depth_gate = 0.15;
+    params.depth_gate_speed = speed;
+    KalmanBoxTracker tracker(params);
+    for (int k = 0; k < 10; ++k) step(tracker, k, {person(200, 100, 120, 300, 2.2)});
+    for (int k = 10; k < 20; ++k) step(tracker, k, {});
+    const auto back = step(tracker, 20, {person(200, 100, 120, 300, 1.7)});
+    const core::Track* t = findId(back, 1);
+    ASSERT_NE(t, nullptr) << "speed " << speed;
+    EXPECT_EQ(t->detection, 0) << "speed " << speed << ": the box matches either way";
+    if (speed > 0) {
+      EXPECT_LT(t->depth, 1.9) << "the person's new depth taken";
+    } else {
+      EXPECT_NEAR(t->depth, 2.2, 0.05) << "what the speed is for: the old depth held";
+    }
+    // Back on consecutive frames, a flip to an occluder 0.4 m nearer is held again.
+    const double settled = t->depth;
+    const auto flipped = step(tracker, 21, {person(200, 100, 120, 300, settled - 0.4)});
+    ASSERT_NE(findId(flipped, 1), nullptr);
+    EXPECT_NEAR(findId(flipped, 1)->depth, settled, 0.05) << "speed " << speed << ": held";
+  }
+}
+
 TEST(TrackingKalmanBoxTracker, InnovationGateKeepsATrackOffAPersonSteppingOutAgainstItsWay) {
   // A person walks right at 4 px a frame; at frame 20 they vanish behind something just as
   // another person at the same depth steps out 35 px to the left of where they were heading.

@@ -85,6 +85,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "alternative_depth_tracks",
                           "depth_gate",
                           "depth_gate_frames",
+                          "depth_gate_speed",
                           "innovation_gate",
                           "reid_at_track_depth",
                           "descriptor_own_surface",
@@ -92,7 +93,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "identity_repair",
                           "revival_takes_identity"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 30u);
+  EXPECT_EQ(keys.size(), 31u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
@@ -106,6 +107,8 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 1.5\n").find("depth_gate"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate_frames = -1\n").find("depth_gate_frames"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_speed = -1\n").find("depth_gate_speed"),
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nreid_at_track_depth = 2\n").find("reid_at_track_depth"),
             std::string::npos);
