@@ -63,10 +63,11 @@ std::string falsePositiveCause(const core::Frame& frame, const core::ObjectGroun
 }
 
 /// ClassificationScore::trackingErrorPx of feature `f` (with depth; its object `row`, nullptr:
-/// background) seen at `lastPixel` in the previous frame; -1 when it cannot be told.
+/// background) seen at `lastPixel` in the previous frame; -1 when it cannot be told. Where the
+/// true motions put it in the previous frame goes to `truePrevious` when given.
 double trackingError(const core::Frame& frame, const Truth& truth, const Truth& previous,
                      const core::ObjectGroundTruthRow* row, const core::Feature& f,
-                     const cv::Point2f& lastPixel) {
+                     const cv::Point2f& lastPixel, cv::Point2f* truePrevious = nullptr) {
   const auto& k = frame.intrinsics;
   if (!(f.depth > 0) || !(k.fx > 0)) return -1;
   Eigen::Vector3d world = truth.T_world_camera * frontend::backProject(f.pixel, f.depth, k);
@@ -76,6 +77,7 @@ double trackingError(const core::Frame& frame, const Truth& truth, const Truth& 
   if (!(then.z() > 0)) return -1;
   const Eigen::Vector2d uv = frontend::project(then, k);
   const cv::Point2f predicted(float(uv.x()), float(uv.y()));
+  if (truePrevious) *truePrevious = predicted;
   return cv::norm(predicted - lastPixel);
 }
 
@@ -109,12 +111,20 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
     labelOfFeature[f.id] = label;
     pixels[f.id] = f.pixel;
     const auto* row = label ? rowOf(truth.objects, label) : nullptr;
+    cv::Point2f truePrevious;
     if (const auto last = lastPixel.find(f.id); previous && last != lastPixel.end())
-      if (const double e = trackingError(frame, truth, *previous, row, f, last->second); e >= 0)
+      if (const double e =
+              trackingError(frame, truth, *previous, row, f, last->second, &truePrevious);
+          e >= 0) {
         trackingErrorPx[!row ? "background"
                         : row->moving ? "moving " + row->category
                                       : "non-moving " + row->category]
             .push_back(e);
+        const cv::Point2f tracked = f.pixel - last->second, truly = f.pixel - truePrevious;
+        if (!row && !f.depth_at_edge && truly.dot(truly) >= 1.0f)
+          backgroundFlowRatio[f.depth < kNearFlowDepth ? 0 : 1].push_back(
+              double(tracked.dot(truly)) / double(truly.dot(truly)));
+      }
     const bool truthDynamic = row && row->moving;
     const bool predicted = f.feature_class != core::FeatureClass::Static;
     // Whether the feature's object is the track whose detection shows this pixel's object.

@@ -68,6 +68,13 @@ struct ClassificationScore {
   /// person's pose is its torso's: its limbs' tracks read their swing as error.
   std::map<std::string, std::vector<double>> trackingErrorPx;
   std::map<std::int64_t, cv::Point2f> lastPixel;  ///< feature id -> its pixel in the last frame
+  /// Background features with depth, none at a depth edge, whose true flow from the last frame
+  /// is 1 px or more: their tracked flow's length along the true flow over the true flow's
+  /// ([0] nearer than kNearFlowDepth, [1] farther). A median under 1 is a tracker whose flows
+  /// come out short, and a trajectory built on them short too. Per feature and by the median,
+  /// because a depth reading off the point (a silhouette) makes a wrong "true" flow.
+  std::vector<double> backgroundFlowRatio[2];
+  static constexpr double kNearFlowDepth = 4.0;  ///< m
 
   void add(const core::Frame& frame, const Truth& truth, const Truth* previous);
   double precision() const { return tp + fp ? double(tp) / double(tp + fp) : 0; }
