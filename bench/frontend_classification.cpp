@@ -271,8 +271,8 @@ void run(const Settings& s) {
         "background flow, tracked along the true one over the true one (median; flows "
         ">= 1 px): nearer than %.0f m %.5f (%zu), farther %.5f (%zu)\n",
         score.kNearFlowDepth,
-        ratio[0].empty() ? 0.0 : dynslam::core::upperPercentile(ratio[0], 0.5), ratio[0].size(),
-        ratio[1].empty() ? 0.0 : dynslam::core::upperPercentile(ratio[1], 0.5), ratio[1].size());
+        dynslam::core::upperMedian(ratio[0]), ratio[0].size(), dynslam::core::upperMedian(ratio[1]),
+        ratio[1].size());
   } else {
     printRatio("features classified static", features ? double(staticFeatures) / features : 0, 0.98,
                true, "");
