@@ -7,7 +7,8 @@
 #   bash bench/estimator_ablation.sh [--build DIR] [--out DIR] [--duration S] [--scenarios "a b"]
 # Variants (Estimator.* set with --set):
 #   none             dynamic_handling = none: every feature static (VINS-Mono-like)
-#   remove           dynamic_handling = remove: dynamic features dropped (Dynamic-VINS-like)
+#   remove           dynamic_handling = remove: features on detected objects dropped, moving
+#                    or not (Dynamic-VINS-like)
 #   full             dynamic_handling = full: the paper (r_D for NonRigid features, r_O / r_om
 #                    for the Rigid features of each object)
 #   full-no-rigid    full with rigid_factors = false (Rigid features dropped)

@@ -148,18 +148,20 @@ void EstimatorOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                  "a frame with fewer static features makes no keyframe (its pose is predicted)");
   core::writeKey(
       c, s, "dynamic_handling", std::string(core::wordOf(dynamic_handling, kHandlings)),
-      "none: every feature static (VINS-Mono); remove: only Static features (Dynamic-VINS); "
-      "full: the paper (see nonrigid_factors, rigid_factors)");
+      "none: every feature static (VINS-Mono); remove: only Static features off the detected "
+      "objects, people and cars masked out moving or not (Dynamic-VINS); full: the paper, Static "
+      "features on objects kept (see nonrigid_factors, rigid_factors)");
   core::writeKey(c, s, "drop_moving_landmarks", drop_moving_landmarks,
-                 "a feature classified as moving takes its static landmark, with every "
-                 "observation, out of the window (not with none)");
+                 "a feature classified as moving (with remove also a still one on a detected "
+                 "object) takes its static landmark, with every observation, out of the window "
+                 "(not with none)");
   core::writeKey(c, s, "nonrigid_factors", nonrigid_factors,
                  "with full: NonRigid features as constant-velocity world points (r_D)");
   core::writeKey(c, s, "rigid_factors", rigid_factors,
                  "with full: Rigid features as points of their object, object poses (r_O, r_om)");
   core::writeKey(c, s, "object_factors_wait_for_imu", object_factors_wait_for_imu,
                  "with full and an IMU: the object factors start once the IMU is initialized "
-                 "(dynamic features handled as with remove until then; not in the method)");
+                 "(moving features dropped until then; not in the method)");
   core::writeKey(c, s, "use_gnss", use_gnss,
                  "GNSS position factors on keyframes (ENU from the first fix, aligned to the world "
                  "once the path spans gnss_align_span)");

@@ -121,7 +121,7 @@ void EstimatorStage::process(core::Frame& frame) {
   std::vector<FeatureObservation>& observations = routed.landmarks;
   const std::map<std::int64_t, Eigen::Vector2d>& pixels = routed.pixels;
   if (window_ && options_.drop_moving_landmarks)
-    landmarks_dropped_ += window_->dropLandmarks(routed.moving);
+    landmarks_dropped_ += window_->dropLandmarks(routed.not_landmarks);
   if (options_.use_gnss && !gnss_ && !frame.gnss.empty())
     gnss_ = std::make_unique<GnssAnchor>(options_.gnss);
   if (gnss_) gnss_->addFixes(frame.gnss);

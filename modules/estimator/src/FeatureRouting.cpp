@@ -11,12 +11,19 @@ RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, Dynamic
     const Eigen::Vector2d px(f.pixel.x, f.pixel.y);
     // A reading beside a depth edge (Feature::depth_at_edge) is left out: it can switch surfaces.
     const FeatureObservation o{f.id, px, f.depth > 0 && !f.depth_at_edge ? double(f.depth) : 0.0};
-    if (handling == DynamicHandling::None || f.feature_class == core::FeatureClass::Static) {
+    // remove drops every feature on a detected object, moving or not: Dynamic-VINS masks the
+    // detected people and cars out (the paper, section 5: "direct filtering ... reduces the
+    // features on people and objects"). Keeping the still ones is the method's own gain (full).
+    const bool onObject = f.object_id >= 0;
+    const bool landmark = handling == DynamicHandling::None ||
+                          (f.feature_class == core::FeatureClass::Static &&
+                           !(handling == DynamicHandling::Remove && onObject));
+    if (landmark) {
       out.landmarks.push_back(o);
       out.pixels[f.id] = px;
       continue;
     }
-    out.moving.push_back(f.id);
+    out.not_landmarks.push_back(f.id);
     if (full && nonrigid_factors && f.feature_class == core::FeatureClass::NonRigid) {
       out.nonrigid.push_back(o);
     } else if (full && rigid_factors && f.feature_class == core::FeatureClass::Rigid &&

@@ -1,5 +1,5 @@
-// Which features go where (FeatureRouting.h): landmarks, r_D, r_O / r_om, and the list of moving
-// features whose static landmarks the window drops, for each dynamic_handling.
+// Which features go where (FeatureRouting.h): landmarks, r_D, r_O / r_om, and the list of features
+// whose static landmarks the window drops, for each dynamic_handling.
 #include <dynslam/estimator/FeatureRouting.h>
 
 #include <gtest/gtest.h>
@@ -35,33 +35,36 @@ std::vector<std::int64_t> ids(const std::vector<FeatureObservation>& o) {
 TEST(FeatureRouting, NoneTakesEveryFeatureAsStaticAndCallsNoneMoving) {
   const auto r = routeFeatures(oneOfEachClass(), DynamicHandling::None, true, true);
   EXPECT_EQ(ids(r.landmarks), (std::vector<std::int64_t>{1, 2, 3, 4}));
-  EXPECT_TRUE(r.moving.empty());
+  EXPECT_TRUE(r.not_landmarks.empty());
   EXPECT_TRUE(r.nonrigid.empty());
   EXPECT_TRUE(r.rigid_objects.empty());
 }
 
-TEST(FeatureRouting, RemoveKeepsTheStaticOnesAndListsTheMovingOnes) {
+TEST(FeatureRouting, RemoveKeepsOnlyTheBackgroundLikeDynamicVins) {
   const auto r = routeFeatures(oneOfEachClass(), DynamicHandling::Remove, true, true);
-  EXPECT_EQ(ids(r.landmarks), (std::vector<std::int64_t>{1, 2}));
-  EXPECT_EQ(r.pixels.size(), 2u);
-  EXPECT_EQ(r.moving, (std::vector<std::int64_t>{3, 4}));
+  EXPECT_EQ(ids(r.landmarks), (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(r.pixels.size(), 1u);
+  EXPECT_EQ(r.not_landmarks, (std::vector<std::int64_t>{2, 3, 4}))
+      << "the standing person is masked out with the walkers";
   EXPECT_TRUE(r.nonrigid.empty());
   EXPECT_TRUE(r.rigid_objects.empty());
 }
 
-TEST(FeatureRouting, FullGivesTheMovingOnesTheirFactorsAndListsThemAsMoving) {
+TEST(FeatureRouting, FullKeepsTheStillOnesOnObjectsAndGivesTheMovingOnesTheirFactors) {
   const auto r = routeFeatures(oneOfEachClass(), DynamicHandling::Full, true, true);
   EXPECT_EQ(ids(r.landmarks), (std::vector<std::int64_t>{1, 2}));
   EXPECT_EQ(ids(r.nonrigid), (std::vector<std::int64_t>{3}));
   ASSERT_EQ(r.rigid_objects.size(), 1u);
   EXPECT_EQ(r.rigid_objects[0].object_id, 9);
   EXPECT_EQ(ids(r.rigid_objects[0].features), (std::vector<std::int64_t>{4}));
-  EXPECT_EQ(r.moving, (std::vector<std::int64_t>{3, 4}));
+  EXPECT_EQ(r.not_landmarks, (std::vector<std::int64_t>{3, 4}));
 
   const auto off = routeFeatures(oneOfEachClass(), DynamicHandling::Full, false, false);
   EXPECT_TRUE(off.nonrigid.empty());
   EXPECT_TRUE(off.rigid_objects.empty());
-  EXPECT_EQ(off.moving, (std::vector<std::int64_t>{3, 4})) << "moving whatever factors they get";
+  EXPECT_EQ(off.not_landmarks, (std::vector<std::int64_t>{3, 4})) << "not landmarks whatever factors they get";
+  EXPECT_EQ(ids(off.landmarks), (std::vector<std::int64_t>{1, 2}))
+      << "without the object factors full keeps the standing person, unlike remove";
 }
 
 TEST(FeatureRouting, AReadingBesideADepthEdgeIsLeftOut) {

@@ -2,10 +2,13 @@
 // Which of a frame's tracked features go where in the sliding window (method.md section 5 and
 // the paper's Table 9 ablations), by the estimator's dynamic_handling and factor switches:
 //   none   - every feature a static landmark, whatever its class (VINS-Mono);
-//   remove - Static features as landmarks, the others dropped (Dynamic-VINS);
+//   remove - Static features off every detected object as landmarks, the others dropped: like
+//            Dynamic-VINS, which masks detected people and cars out whether they move or not;
 //   full   - Static features as landmarks, NonRigid ones as constant-velocity points (r_D) when
 //            nonrigid_factors, Rigid ones as points of their object (r_O, r_om) when
-//            rigid_factors; a class whose factors are off is dropped as in remove.
+//            rigid_factors; a class whose factors are off is dropped. Static features on an
+//            object (a standing person, a parked car) are landmarks, as the front-end found
+//            them still: with both factor switches off that is remove without the masking.
 #include <dynslam/core/Features.h>
 #include <dynslam/estimator/SlidingWindow.h>
 
@@ -24,9 +27,10 @@ struct RoutedFeatures {
   std::map<std::int64_t, Eigen::Vector2d> pixels;  ///< the landmarks' pixels (keyframes, PnP)
   std::vector<FeatureObservation> nonrigid;        ///< r_D
   std::vector<RigidObjectInput> rigid_objects;     ///< r_O / r_om, one entry per object
-  /// Features classified as moving (not Static; empty with none): whatever the window holds of
-  /// them as static landmarks was taken from frames in which they were not known to move.
-  std::vector<std::int64_t> moving;
+  /// Features that are not landmarks this frame (empty with none): those classified as moving,
+  /// and with remove the still ones on a detected object. Whatever the window holds of them as
+  /// static landmarks was taken from frames in which they were not known to be so.
+  std::vector<std::int64_t> not_landmarks;
 };
 
 RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, DynamicHandling handling,
