@@ -19,6 +19,7 @@ void DynamicClassificationOptions::loadFromConfigFile(const mrpt::config::CConfi
   p.speed_window = c.read_int(s, "speed_window", p.speed_window);
   p.speed_statistic = core::readKeyword(c, s, "speed_statistic", p.speed_statistic, kStatistics);
   p.min_flow_features = c.read_int(s, "min_flow_features", p.min_flow_features);
+  p.start_moving_frames = c.read_int(s, "start_moving_frames", p.start_moving_frames);
   p.speed_noise_sigmas = c.read_double(s, "speed_noise_sigmas", p.speed_noise_sigmas);
   p.still_feature_speed = c.read_double(s, "still_feature_speed", p.still_feature_speed);
   p.still_feature_in_still_box =
@@ -96,6 +97,9 @@ void DynamicClassificationOptions::saveToConfigFile(mrpt::config::CConfigFileBas
                  "0: off)");
   core::writeKey(c, s, "min_flow_features", p.min_flow_features,
         "features with flow an object needs for a speed; fewer: last decision kept");
+  core::writeKey(c, s, "start_moving_frames", p.start_moving_frames,
+                 "an object judged still turns dynamic on this many measured frames in a row "
+                 "over the threshold (not the method; 1: at once)");
   core::writeKey(c, s, "depth_window", p.depth_window,
         "px; a feature's 3-D point uses the robust median depth of this window (1: its pixel)");
   core::writeKey(c, s, "far_object_min_depth", p.far_object_min_depth,
@@ -149,6 +153,8 @@ void DynamicClassificationStage::configure(const core::IniConfig& cfg, const std
   };
   if (!(p.speed_threshold >= 0))
     fail("speed_threshold", std::to_string(p.speed_threshold), "must be >= 0");
+  if (p.start_moving_frames < 1)
+    fail("start_moving_frames", std::to_string(p.start_moving_frames), "must be >= 1");
   if (!(p.speed_noise_sigmas >= 0))
     fail("speed_noise_sigmas", std::to_string(p.speed_noise_sigmas), "must be >= 0");
   if (!(p.still_feature_speed >= 0))

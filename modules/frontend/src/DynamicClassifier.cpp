@@ -316,7 +316,12 @@ void DynamicClassifier::process(core::Frame& frame) {
       const double n = double(s.features);
       const double noise =
           std::sqrt(1.5625 * velocityVar[id] / n / n + cameraVarSum[id] / n);
-      s.dynamic = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
+      const bool over = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
+      int& run = movingRun_[id];
+      run = over ? run + 1 : 0;
+      const auto last = previousDecision.find(id);
+      const bool wasStill = last != previousDecision.end() && !last->second;
+      s.dynamic = over && !(wasStill && run < params_.start_moving_frames);
     } else {
       const auto last = previousDecision.find(id);
       if (last != previousDecision.end()) {

@@ -658,6 +658,8 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
   EXPECT_NE(messageOf("rigid_ray_gate = 0\n").find("rigid_ray_gate"), std::string::npos);
   EXPECT_NE(messageOf("still_above_feet_fraction = 1\n").find("still_above_feet_fraction"),
             std::string::npos);
+  EXPECT_NE(messageOf("start_moving_frames = 0\n").find("start_moving_frames"),
+            std::string::npos);
 }
 
 // A walker's mask that once spilled over background (here: its box grown by 60 px for one
@@ -782,6 +784,37 @@ TEST(DynamicClassifier, StillFeaturesAboveAWalkersFeetAreStatic) {
   EXPECT_EQ(run(0).second, 0) << "off: the wall in the walker's mask takes its class";
   const auto on = run(0.25);
   EXPECT_EQ(on.second, on.first) << "still above its feet: Static";
+}
+
+// On frame 12 the segmentation gives the walker's surface to the standing person's track and the
+// standing person's to the walker's (their track ids swap for that frame): by the method the
+// standing person moves on that frame. With start_moving_frames = 2 a still object needs two
+// measured frames in a row over the threshold, so the one-frame swap leaves it still, while the
+// walker, already moving, is decided at once as before. A swap held for two frames turns it.
+TEST(DynamicClassifier, AStillObjectStartsMovingOnlyAfterStartMovingFramesInARow) {
+  auto standingDynamic = [](int startMovingFrames, int swapFrames) {
+    DynamicClassifierParams params;
+    params.start_moving_frames = startMovingFrames;
+    const Scene scene;
+    DynamicClassifier classifier(params);
+    std::vector<bool> dynamic;
+    for (int k = 0; k < 16; ++k) {
+      core::Frame f = scene.frame(k);
+      if (k >= 12 && k < 12 + swapFrames) std::swap(f.tracks[0].id, f.tracks[1].id);
+      classifier.process(f);
+      for (const auto& s : f.object_motions)
+        if (s.object_id == 2) dynamic.push_back(s.dynamic);
+    }
+    return dynamic;
+  };
+  const auto method = standingDynamic(1, 1);
+  ASSERT_EQ(method.size(), 16u);
+  for (int k = 0; k < 16; ++k) EXPECT_EQ(method[k], k == 12) << "method, frame " << k;
+  const auto debounced = standingDynamic(2, 1);
+  for (int k = 0; k < 16; ++k) EXPECT_FALSE(debounced[k]) << "start_moving_frames 2, frame " << k;
+  const auto held = standingDynamic(2, 2);
+  EXPECT_FALSE(held[12]);
+  EXPECT_TRUE(held[13]) << "the second frame in a row turns it";
 }
 
 }  // namespace

@@ -123,6 +123,11 @@
 // the previous frame stays with that object while its track lives, unless the object's mask box
 // holds the pixel (then the mask says the feature left it): a detector miss (the track coasts)
 // or a box a few pixels short does not throw the object's features into the background.
+// start_moving_frames (default 1 = off): an object judged still (a standing person) whose
+// speed test says "moving" on one frame is most often a passing walker's surface or sliding
+// corners in its mask for a frame or two (indoor_people_high seed 6: frames 243-247, 424-426);
+// with K it turns dynamic on the K-th measured frame in a row that says so. A new object, or
+// one already moving, is decided at once.
 // Objects without a speed (fewer than min_flow_features features with flow: just appeared, or
 // beyond the depth range) keep their last decision; a new track takes the majority decision of
 // the objects its features were on in the last frame (trackers re-number objects); without
@@ -153,6 +158,9 @@ struct DynamicClassifierParams {
   /// 0: the plain threshold of the method. See the file comment.
   double speed_noise_sigmas = 2.0;
   int min_flow_features = 3;     ///< fewer features with flow: the speed is not measured
+  /// An object judged not to move turns dynamic only once its speed test says so on this many
+  /// measured frames in a row (not the method; 1: at once, the method). See the file comment.
+  int start_moving_frames = 1;
   /// A Static feature whose own scene flow over the window stays slower than this (m/s) stays
   /// Static whichever object's mask takes it (not the method, which decides per object; 0:
   /// off). See the file comment.
@@ -258,6 +266,7 @@ class DynamicClassifier {
   /// Per depthless feature id, its pixels over the window (far_object_min_depth > 0 only).
   std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixelHistory_;
   std::map<int, bool> lastDynamic_;                                    ///< per object id
+  std::map<int, int> movingRun_;  ///< per object id: measured frames in a row over the threshold
   std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
   std::map<std::int64_t, int> objectOf_;  ///< feature id -> object id, last frame
   std::unordered_set<std::int64_t> wasStatic_;  ///< features classified Static last frame
