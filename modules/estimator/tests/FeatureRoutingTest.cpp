@@ -62,7 +62,8 @@ TEST(FeatureRouting, FullKeepsTheStillOnesOnObjectsAndGivesTheMovingOnesTheirFac
   const auto off = routeFeatures(oneOfEachClass(), DynamicHandling::Full, false, false);
   EXPECT_TRUE(off.nonrigid.empty());
   EXPECT_TRUE(off.rigid_objects.empty());
-  EXPECT_EQ(off.not_landmarks, (std::vector<std::int64_t>{3, 4})) << "not landmarks whatever factors they get";
+  EXPECT_EQ(off.not_landmarks, (std::vector<std::int64_t>{3, 4}))
+      << "not landmarks whatever factors they get";
   EXPECT_EQ(ids(off.landmarks), (std::vector<std::int64_t>{1, 2}))
       << "without the object factors full keeps the standing person, unlike remove";
 }

@@ -123,11 +123,12 @@
 // the previous frame stays with that object while its track lives, unless the object's mask box
 // holds the pixel (then the mask says the feature left it): a detector miss (the track coasts)
 // or a box a few pixels short does not throw the object's features into the background.
-// start_moving_frames (default 1 = off): an object judged still (a standing person) whose
-// speed test says "moving" on one frame is most often a passing walker's surface or sliding
-// corners in its mask for a frame or two (indoor_people_high seed 6: frames 243-247, 424-426);
-// with K it turns dynamic on the K-th measured frame in a row that says so. A new object, or
-// one already moving, is decided at once.
+// start_moving_frames (default 1 = off): where an object judged still (a standing person) reads
+// "moving", it is most often a passing walker's surface or corners sliding with a silhouette in
+// its mask, in runs of a few frames (indoor_people_high seed 6: frames 243-247, 424-426); with
+// K it turns dynamic on the K-th measured frame in a row that says so, which removes the
+// one-frame runs and shortens the others. A new object, or one already moving, is decided at
+// once.
 // Objects without a speed (fewer than min_flow_features features with flow: just appeared, or
 // beyond the depth range) keep their last decision; a new track takes the majority decision of
 // the objects its features were on in the last frame (trackers re-number objects); without
