@@ -30,17 +30,24 @@ bool inMaskBox(const core::Frame& frame, const cv::Point2f& pixel, bool valid) {
   return false;
 }
 
-/// ClassificationScore::depthlessMisses' key for the missed feature `f` on object `row`.
-std::string depthlessMissCause(const core::Frame& frame, const Truth& truth,
-                               const core::ObjectGroundTruthRow& row, const core::Feature& f) {
+/// ClassificationScore::depthlessMisses' and depthMisses' key for the missed feature `f` on
+/// object `row`.
+std::string missCause(const core::Frame& frame, const Truth& truth,
+                      const core::ObjectGroundTruthRow& row, const core::Feature& f) {
   const double z = (truth.T_world_camera.inverse() * row.T_world_object).translation().z();
-  const char* band = z < 10 ? "0-10 m" : z < 20 ? "10-20 m" : "20+ m";
+  const char* band = z < 5 ? "0-5 m" : z < 10 ? "5-10 m" : z < 20 ? "10-20 m" : "20+ m";
   const auto inTrackBox = [&] {
     for (const auto& t : frame.tracks)
       if (t.box.contains(f.pixel)) return true;
     return false;
   };
-  const char* where = f.object_id >= 0                     ? "given to an object judged static"
+  const auto motion = std::find_if(frame.object_motions.begin(), frame.object_motions.end(),
+                                   [&f](const auto& m) { return m.object_id == f.object_id; });
+  const bool unmeasured = motion == frame.object_motions.end() || motion->features == 0;
+  const bool judgedDynamic = motion != frame.object_motions.end() && motion->dynamic;
+  const char* where = f.object_id >= 0 && judgedDynamic  ? "static in an object judged dynamic"
+                      : f.object_id >= 0 && unmeasured   ? "given to an object without scene flow"
+                      : f.object_id >= 0                 ? "given to an object judged static"
                       : inMaskBox(frame, f.pixel, false) ? "in a depthless box"
                       : inMaskBox(frame, f.pixel, true)  ? "in a masked box, outside its mask"
                       : inTrackBox()                     ? "in a track's box only"
@@ -145,8 +152,8 @@ void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
       tnDepth += !truthDynamic && !predicted;
     }
     if (truthDynamic && !predicted) ++(f.object_id < 0 ? fnNoObject : fnJudgedStatic);
-    if (truthDynamic && !predicted && !(f.depth > 0))
-      ++depthlessMisses[depthlessMissCause(frame, truth, *row, f)];
+    if (truthDynamic && !predicted)
+      ++(f.depth > 0 ? depthMisses : depthlessMisses)[missCause(frame, truth, *row, f)];
     if (row && !row->moving && predicted) {
       const char* cause = f.object_id < 0                       ? "no track"
                           : ownTrack && matchedNow[f.object_id] ? "own track (matched)"

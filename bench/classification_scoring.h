@@ -49,10 +49,14 @@ struct ClassificationScore {
   /// track". Tracks are known by their detections' simulator ids (the ground-truth detector).
   std::map<std::string, std::map<std::string, size_t>> nonMovingMisses;
   /// The false negatives without a depth reading, by "category, distance band: where" (the
-  /// object's rigid core 0-10 / 10-20 / 20+ m ahead; where: "given to an object judged static",
-  /// "in a depthless box" (outside its middle half, which far_object_min_depth measures), "in a
-  /// masked box, outside its mask", "in a track's box only", "in no box").
+  /// object's rigid core 0-5 / 5-10 / 10-20 / 20+ m ahead; where: "static in an object judged
+  /// dynamic" (the feature's own tests kept it Static), "given to an object without scene flow",
+  /// "given to an object judged static", "in a depthless box" (outside its middle half, which
+  /// far_object_min_depth measures), "in a masked box, outside its mask", "in a track's box
+  /// only", "in no box").
   std::map<std::string, size_t> depthlessMisses;
+  /// The same for the false negatives with a depth reading.
+  std::map<std::string, size_t> depthMisses;
   /// The false positives, by "what the pixel shows: whose feature it was" (what: background, a
   /// non-moving car or person; whose: "its own mask's" (the mask of the object's own track holds
   /// its pixel), "a mask's" (another object's mask holds it), "carried" (its object's membership

@@ -224,10 +224,11 @@ void run(const Settings& s) {
     std::printf("%-44s precision %.4f, recall %.4f (TP %zu FP %zu FN %zu TN %zu)\n",
                 "  features with depth only:", score.precisionWithDepth(), score.recallWithDepth(),
                 score.tpDepth, score.fpDepth, score.fnDepth, score.tnDepth);
-    if (!score.depthlessMisses.empty()) {
-      std::printf("%-44s\n", "  false negatives without depth, by object and place:");
-      for (const auto& [cause, n] : score.depthlessMisses)
-        std::printf("    %-60s %zu\n", cause.c_str(), n);
+    for (const auto& [misses, title] :
+         {std::pair{&score.depthMisses, "with"}, std::pair{&score.depthlessMisses, "without"}}) {
+      if (misses->empty()) continue;
+      std::printf("  false negatives %s depth, by object and place:\n", title);
+      for (const auto& [cause, n] : *misses) std::printf("    %-60s %zu\n", cause.c_str(), n);
     }
     if (!score.falsePositives.empty()) {
       std::printf("%-44s\n", "  false positives, by what the pixel shows and whose feature:");
