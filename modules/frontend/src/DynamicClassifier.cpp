@@ -107,12 +107,29 @@ std::vector<double> DynamicClassifier::decideFarObjects(
       const auto last = lastDynamic_.find(id);
       s.dynamic = last != lastDynamic_.end() && last->second;
     }
-    lastDynamic_[id] = s.dynamic;
+    remember(id, s.dynamic, frame.t);
     dynamic[id] = s.dynamic;
     counts_.dynamic_objects += s.dynamic;
     frame.object_motions.push_back(s);
   }
   return speed;
+}
+
+void DynamicClassifier::remember(int id, bool dynamic, double t) {
+  lastDynamic_[id] = dynamic;
+  lastSeenT_[id] = t;
+}
+
+void DynamicClassifier::forgetObjectsUnseenSince(double t) {
+  for (auto it = lastSeenT_.begin(); it != lastSeenT_.end();) {
+    if (it->second >= t) {
+      ++it;
+      continue;
+    }
+    lastDynamic_.erase(it->first);
+    movingRun_.erase(it->first);
+    it = lastSeenT_.erase(it);
+  }
 }
 
 const char* toString(CameraMotionSource source) {
@@ -302,8 +319,9 @@ void DynamicClassifier::process(core::Frame& frame) {
       break;
     }
   }
+  // This frame's decisions; lastDynamic_ holds the previous ones until all are made.
   std::map<int, bool> dynamic;
-  const std::map<int, bool> previousDecision = lastDynamic_;
+  const std::map<int, bool>& previousDecision = lastDynamic_;
   for (const auto& [id, region] : seen) {
     core::ObjectMotionState s;
     s.object_id = id;
@@ -342,11 +360,11 @@ void DynamicClassifier::process(core::Frame& frame) {
         s.dynamic = votes > 0 && 2 * dynamicVotes >= votes;
       }
     }
-    lastDynamic_[id] = s.dynamic;
     dynamic[id] = s.dynamic;
     counts_.dynamic_objects += s.dynamic;
     frame.object_motions.push_back(s);
   }
+  for (const auto& [id, d] : dynamic) remember(id, d, frame.t);
 
   const std::vector<double> farSpeed = decideFarObjects(frame, farOf, dynamic);
 
@@ -444,6 +462,7 @@ void DynamicClassifier::process(core::Frame& frame) {
   }
   objectOf_ = std::move(nextObjectOf);
   wasStatic_ = std::move(nextStatic);
+  forgetObjectsUnseenSince(frame.t - kObjectMemoryS);
   prevT_ = frame.t;
   prevPose_ = frame.T_world_camera;
   ++frame_;

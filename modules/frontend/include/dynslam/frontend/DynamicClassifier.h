@@ -227,6 +227,13 @@ class DynamicClassifier {
   const CameraMotionEstimate& lastCameraMotion() const { return camera_; }
   const ClassifierCounts& counts() const { return counts_; }
   const DynamicClassifierParams& params() const { return params_; }
+  // Object ids are never reused, and a street sees thousands of tracks a minute: what is kept per
+  // object is forgotten once the object has not been decided for this long (s). That is longer
+  // than a track coasts (max_age, seconds) and than a lost id can be revived (reid_memory 10 s in
+  // the shipped inis); a revived id older than this is decided as a new track is.
+  static constexpr double kObjectMemoryS = 30.0;
+  /// Objects whose decision is kept (those decided within the last kObjectMemoryS).
+  std::size_t rememberedObjects() const { return lastSeenT_.size(); }
 
  private:
   struct Observation {
@@ -242,6 +249,10 @@ class DynamicClassifier {
   std::vector<double> decideFarObjects(core::Frame& frame,
                                        const std::vector<const ObjectRegion*>& farOf,
                                        std::map<int, bool>& dynamic);
+  /// Records object `id`'s decision of this frame (time `t`, s).
+  void remember(int id, bool dynamic, double t);
+  /// Drops what is kept per object for the objects not decided since time `t` (s).
+  void forgetObjectsUnseenSince(double t);
   /// Summed variance (m^2) of the camera translations of the frames after `frame` up to now.
   double cameraVarianceSince(std::size_t frame) const;
   /// T_{C(cur) <- C(frame)} from the chain of estimated camera motions.
@@ -268,6 +279,7 @@ class DynamicClassifier {
   std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixelHistory_;
   std::map<int, bool> lastDynamic_;                                    ///< per object id
   std::map<int, int> movingRun_;  ///< per object id: measured frames in a row over the threshold
+  std::map<int, double> lastSeenT_;  ///< per object id: when it was last decided (s)
   std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
   std::map<std::int64_t, int> objectOf_;  ///< feature id -> object id, last frame
   std::unordered_set<std::int64_t> wasStatic_;  ///< features classified Static last frame
