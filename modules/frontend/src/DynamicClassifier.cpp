@@ -44,17 +44,18 @@ std::deque<Entry> withLatest(std::unordered_map<std::int64_t, std::deque<Entry>>
 }
 
 /// Whether `pixel` lies in the box of an object other than `own` not judged to move: by its
-/// latest decision (`dynamic`: this frame's, or the last one of an object whose features all
-/// went to other masks), or for want of one (no scene flow says it moves, as for a new track).
-/// With `z` > 0, only an object whose d_t is nearer `z` than `ownDepth` counts.
-bool inStillObjectsBox(const std::vector<ObjectRegion>& regions, const std::map<int, bool>& dynamic,
+/// latest decision (`decisionOf(id)`, a std::optional<bool>: this frame's, or the last one of an
+/// object whose features all went to other masks), or for want of one (no scene flow says it
+/// moves, as for a new track). With `z` > 0, only an object whose d_t is nearer `z` than
+/// `ownDepth` counts.
+template <class DecisionOf>
+bool inStillObjectsBox(const std::vector<ObjectRegion>& regions, const DecisionOf& decisionOf,
                        int own, const cv::Point2f& pixel, double z = 0, double ownDepth = 0) {
   const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
   for (const auto& r : regions) {
     if (r.object_id == own || !r.roi.contains(px)) continue;
     if (z > 0 && !(r.depth > 0 && std::abs(z - r.depth) < std::abs(z - ownDepth))) continue;
-    const auto d = dynamic.find(r.object_id);
-    if (d == dynamic.end() || !d->second) return true;
+    if (!decisionOf(r.object_id).value_or(false)) return true;
   }
   return false;
 }
@@ -104,8 +105,7 @@ std::vector<double> DynamicClassifier::decideFarObjects(
       const double noise = std::sqrt(1.5625 * noiseVar[id] / n / n);
       s.dynamic = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
     } else {
-      const auto last = lastDynamic_.find(id);
-      s.dynamic = last != lastDynamic_.end() && last->second;
+      s.dynamic = lastDecision(id).value_or(false);
     }
     remember(id, s.dynamic, frame.t);
     dynamic[id] = s.dynamic;
@@ -115,21 +115,20 @@ std::vector<double> DynamicClassifier::decideFarObjects(
   return speed;
 }
 
+std::optional<bool> DynamicClassifier::lastDecision(int id) const {
+  const auto o = objects_.find(id);
+  return o == objects_.end() ? std::nullopt : std::optional<bool>(o->second.dynamic);
+}
+
 void DynamicClassifier::remember(int id, bool dynamic, double t) {
-  lastDynamic_[id] = dynamic;
-  lastSeenT_[id] = t;
+  ObjectMemory& o = objects_[id];
+  o.dynamic = dynamic;
+  o.decided_t = t;
 }
 
 void DynamicClassifier::forgetObjectsUnseenSince(double t) {
-  for (auto it = lastSeenT_.begin(); it != lastSeenT_.end();) {
-    if (it->second >= t) {
-      ++it;
-      continue;
-    }
-    lastDynamic_.erase(it->first);
-    movingRun_.erase(it->first);
-    it = lastSeenT_.erase(it);
-  }
+  for (auto it = objects_.begin(); it != objects_.end();)
+    it = it->second.decided_t < t ? objects_.erase(it) : std::next(it);
 }
 
 const char* toString(CameraMotionSource source) {
@@ -319,9 +318,10 @@ void DynamicClassifier::process(core::Frame& frame) {
       break;
     }
   }
-  // This frame's decisions; lastDynamic_ holds the previous ones until all are made.
+  // This frame's decisions and start_moving_frames' runs; objects_ holds the previous ones until
+  // all are made.
   std::map<int, bool> dynamic;
-  const std::map<int, bool>& previousDecision = lastDynamic_;
+  std::map<int, int> movingRuns;
   for (const auto& [id, region] : seen) {
     core::ObjectMotionState s;
     s.object_id = id;
@@ -335,15 +335,14 @@ void DynamicClassifier::process(core::Frame& frame) {
       const double noise =
           std::sqrt(1.5625 * velocityVar[id] / n / n + cameraVarSum[id] / n);
       const bool over = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
-      int& run = movingRun_[id];
-      run = over ? run + 1 : 0;
-      const auto last = previousDecision.find(id);
-      const bool wasStill = last != previousDecision.end() && !last->second;
+      const auto before = objects_.find(id);
+      const int run = over ? (before != objects_.end() ? before->second.moving_run : 0) + 1 : 0;
+      movingRuns[id] = run;
+      const bool wasStill = before != objects_.end() && !before->second.dynamic;
       s.dynamic = over && !(wasStill && run < params_.start_moving_frames);
     } else {
-      const auto last = previousDecision.find(id);
-      if (last != previousDecision.end()) {
-        s.dynamic = last->second;
+      if (const std::optional<bool> last = lastDecision(id)) {
+        s.dynamic = *last;
       } else {
         // A new track (the tracker may give an object a new id): its features' objects of the
         // last frame vote; without votes it is not dynamic (no scene flow says it moves).
@@ -352,10 +351,10 @@ void DynamicClassifier::process(core::Frame& frame) {
           if (!cur[i].region || cur[i].region->object_id != id) continue;
           const auto before = objectOf_.find(frame.features[i].id);
           if (before == objectOf_.end()) continue;
-          const auto decision = previousDecision.find(before->second);
-          if (decision == previousDecision.end()) continue;
+          const std::optional<bool> decision = lastDecision(before->second);
+          if (!decision) continue;
           ++votes;
-          dynamicVotes += decision->second;
+          dynamicVotes += *decision;
         }
         s.dynamic = votes > 0 && 2 * dynamicVotes >= votes;
       }
@@ -365,6 +364,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     frame.object_motions.push_back(s);
   }
   for (const auto& [id, d] : dynamic) remember(id, d, frame.t);
+  for (const auto& [id, run] : movingRuns) objects_[id].moving_run = run;
 
   const std::vector<double> farSpeed = decideFarObjects(frame, farOf, dynamic);
 
@@ -390,6 +390,7 @@ void DynamicClassifier::process(core::Frame& frame) {
   }
 
   // 5. Classes.
+  const auto decisionOf = [this](int id) { return lastDecision(id); };
   std::unordered_set<std::int64_t> nextStatic;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
@@ -398,7 +399,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     const bool stillAndWasStatic =
         still && (wasStatic_.count(f.id) > 0 ||
                   (params_.still_feature_in_still_box && region &&
-                   inStillObjectsBox(regions, lastDynamic_, region->object_id, f.pixel)));
+                   inStillObjectsBox(regions, decisionOf, region->object_id, f.pixel)));
     const bool movingInStillObject = region && !dynamic[region->object_id] &&
                                      params_.moving_feature_speed > 0 &&
                                      cur[i].speed - params_.speed_noise_sigmas *
@@ -414,7 +415,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     // unmeasured_feature_by_depth: no flow yet (a new corner), so the depth says whose it is.
     const bool unmeasuredOfStill = params_.unmeasured_feature_by_depth && region &&
                                    cur[i].has_point && cur[i].speed < 0 &&
-                                   inStillObjectsBox(regions, lastDynamic_, region->object_id,
+                                   inStillObjectsBox(regions, decisionOf, region->object_id,
                                                      f.pixel, cur[i].P.z(), region->depth);
     // still_above_feet_fraction: a walker's only still parts are its planted feet.
     const bool stillAboveFeet =

@@ -140,6 +140,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -233,7 +234,7 @@ class DynamicClassifier {
   // the shipped inis); a revived id older than this is decided as a new track is.
   static constexpr double kObjectMemoryS = 30.0;
   /// Objects whose decision is kept (those decided within the last kObjectMemoryS).
-  std::size_t rememberedObjects() const { return lastSeenT_.size(); }
+  std::size_t rememberedObjects() const { return objects_.size(); }
 
  private:
   struct Observation {
@@ -249,6 +250,8 @@ class DynamicClassifier {
   std::vector<double> decideFarObjects(core::Frame& frame,
                                        const std::vector<const ObjectRegion*>& farOf,
                                        std::map<int, bool>& dynamic);
+  /// Object `id`'s last decision (dynamic or not), if it is remembered.
+  std::optional<bool> lastDecision(int id) const;
   /// Records object `id`'s decision of this frame (time `t`, s).
   void remember(int id, bool dynamic, double t);
   /// Drops what is kept per object for the objects not decided since time `t` (s).
@@ -277,9 +280,13 @@ class DynamicClassifier {
   };
   /// Per depthless feature id, its pixels over the window (far_object_min_depth > 0 only).
   std::unordered_map<std::int64_t, std::deque<PixelObservation>> pixelHistory_;
-  std::map<int, bool> lastDynamic_;                                    ///< per object id
-  std::map<int, int> movingRun_;  ///< per object id: measured frames in a row over the threshold
-  std::map<int, double> lastSeenT_;  ///< per object id: when it was last decided (s)
+  /// What is kept of an object between frames (forgotten after kObjectMemoryS).
+  struct ObjectMemory {
+    bool dynamic = false;  ///< its last decision
+    int moving_run = 0;    ///< measured frames in a row over the threshold, up to that one
+    double decided_t = 0;  ///< when it was last decided (s)
+  };
+  std::map<int, ObjectMemory> objects_;                                ///< per object id
   std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
   std::map<std::int64_t, int> objectOf_;  ///< feature id -> object id, last frame
   std::unordered_set<std::int64_t> wasStatic_;  ///< features classified Static last frame
