@@ -4,7 +4,7 @@
 //
 //   build/bin/bench-tracking [--config params/sim/indoor_people_high.ini] [--frames N]
 //       [--miss-rate 0.1] [--jitter 3] [--min-visible 0.2] [--seed 1]
-//       [--depth segmentation|truth|box] [--report-coasting 1]
+//       [--depth segmentation|truth|box] [--true-depth-below V] [--report-coasting 1]
 //       [--sweep Tracking.rho_min=0.3,0.5,0.6,0.7,0.8]  ('' for none)
 //       [--set Section.key=value]...   (Tracking.* goes to the tracker, Segmentation.* to the
 //                                       segmentation, the rest to the scenario)
@@ -343,7 +343,8 @@ void benchSimulation(const BenchSettings& s) {
       "detections      GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported "
       "when >= %.2f visible; depth: %s (median error %.1f %%, %.1f %% of detections off by "
       "more than 15 %%)\n",
-      s.miss_rate, s.jitter, s.min_visible, s.depth.c_str(), 100 * percentile(depthError, 0.5),
+      s.miss_rate, s.jitter, s.min_visible, depthSource(s).c_str(),
+      100 * percentile(depthError, 0.5),
       100.0 *
           double(std::count_if(depthError.begin(), depthError.end(),
                                [](double e) { return e > 0.15; })) /
@@ -445,16 +446,17 @@ void benchSimulationSet(const BenchSettings& s, const std::vector<int>& scenario
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-tracking", [&] {
-    core::CommandLine cl({"--config", "--frames", "--miss-rate", "--jitter", "--min-visible",
-                          "--seed", "--depth", "--report-coasting", "--video", "--model", "--strip",
-                          "--video-frames", "--sweep", "--trace", "--scenarios", "--seeds",
-                          "--jobs"},
-                         {"--identities"}, {"--set"});
+    core::CommandLine cl(
+        {"--config", "--frames", "--miss-rate", "--jitter", "--min-visible", "--seed", "--depth",
+         "--report-coasting", "--video", "--model", "--strip", "--video-frames", "--sweep",
+         "--trace", "--scenarios", "--seeds", "--jobs", "--true-depth-below"},
+        {"--identities"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << "usage: bench-tracking [--config INI] [--frames N] [--miss-rate 0.1] "
                    "[--jitter 3] [--min-visible 0.2] [--seed 1] [--depth segmentation|truth|box] "
-                   "[--report-coasting 1] [--sweep Tracking.key=v1,v2,...|''] [--set "
+                   "[--true-depth-below V] [--report-coasting 1] [--sweep "
+                   "Tracking.key=v1,v2,...|''] [--set "
                    "Section.key=value]... [--identities] [--trace FIRST-LAST] "
                    "[--scenarios A-B] [--seeds A-B] [--jobs N] "
                    "[--video FILE --model ONNX --strip PNG [--video-frames N]]\n";
@@ -470,6 +472,11 @@ int main(int argc, char** argv) {
     s.depth = cl.valueOr("--depth", s.depth);
     if (s.depth != "segmentation" && s.depth != "truth" && s.depth != "box")
       throw core::UsageError("--depth must be segmentation, truth or box, not '" + s.depth + "'");
+    s.true_depth_below = cl.optionalDouble("--true-depth-below").value_or(0.0);
+    if (s.true_depth_below < 0 || s.true_depth_below > 1 ||
+        (s.true_depth_below > 0 && s.depth != "segmentation"))
+      throw core::UsageError(
+          "--true-depth-below must lie in [0, 1] and goes with --depth segmentation");
     s.report_coasting = int(cl.optionalInteger("--report-coasting").value_or(s.report_coasting));
     s.sweep = cl.valueOr("--sweep", s.sweep);
     s.identities = cl.has("--identities");

@@ -84,10 +84,11 @@ void benchRunSet(const BenchSettings& s, const std::vector<int>& scenarios,
   std::vector<RunResult> results;
   for (const int scenario : scenarios)
     for (const int seed : seeds) results.push_back({scenario, seed, {}});
-  std::printf("run set         %zu runs (%zu choreographies, Scenario.seed; %zu detector seeds), "
-              "%d in parallel; %s, depth %s\n",
-              results.size(), scenarios.size(), seeds.size(), jobs, s.config.c_str(),
-              s.depth.c_str());
+  std::printf(
+      "run set         %zu runs (%zu choreographies, Scenario.seed; %zu detector seeds), "
+      "%d in parallel; %s, depth %s\n",
+      results.size(), scenarios.size(), seeds.size(), jobs, s.config.c_str(),
+      depthSource(s).c_str());
   std::fflush(stdout);
   std::atomic<size_t> next{0};
   std::mutex progress;

@@ -12,11 +12,21 @@
 
 #include <unistd.h>
 #include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 
 namespace dynslam::bench {
+
+std::string depthSource(const BenchSettings& s) {
+  if (!(s.true_depth_below > 0)) return s.depth;
+  char label[96];
+  std::snprintf(label, sizeof label, "%s (true below %.2f visible)", s.depth.c_str(),
+                s.true_depth_below);
+  return label;
+}
+
 namespace {
 
 /// The object's true depth as the segmentation should measure it: the median depth of its
@@ -120,6 +130,13 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
           truth.depth = trueDepth(sf, o);
           truth.visible = o.visible_fraction;
         }
+      if (truth.depth > 0 && truth.visible < s.true_depth_below) {
+        tracking::BoxObservation& partlyHidden = c.observations.back();
+        partlyHidden.depth = truth.depth;
+        partlyHidden.depth_alt = 0;
+        partlyHidden.appearance =
+            tracking::bodyHistogram(frame.rgb, d.box, frame.depth, truth.depth);
+      }
       c.observation_truth.push_back(truth);
     }
     // The tracker reads appearance_at (reid_at_track_depth) of these only; each keeps a copy of

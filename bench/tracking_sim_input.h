@@ -21,6 +21,11 @@ struct BenchSettings {
   double miss_rate = 0.1, jitter = 3.0, min_visible = 0.2;
   uint32_t seed = 1;
   std::string depth = "segmentation";
+  /// --true-depth-below V (with depth "segmentation"; 0 = off): a detection of a person less
+  /// than V visible takes the true depth instead of the segmentation's (no d_alt), and its
+  /// descriptor is taken in the band of that depth: how much of the gap between the two depths
+  /// the partly hidden people make.
+  double true_depth_below = 0;
   int report_coasting = 1;
   bool identities = false;  // print which tracks covered each truth id
   int trace_first = -1, trace_last = -1;  // --trace A-B: print the tracker's frames A..B
@@ -28,6 +33,10 @@ struct BenchSettings {
   std::vector<std::string> sim_overrides, tracker_overrides;
   std::vector<std::string> segmentation_overrides;  // "Segmentation.key=value" (--set)
 };
+
+/// How the depth was given, for the printouts: "segmentation", "truth", "box", or
+/// "segmentation (true below 0.60 visible)".
+std::string depthSource(const BenchSettings& s);
 
 /// The truth behind one observation; a false positive keeps the defaults.
 struct ObservationTruth {
