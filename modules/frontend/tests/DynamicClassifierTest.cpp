@@ -817,12 +817,6 @@ TEST(DynamicClassifier, AStillObjectStartsMovingOnlyAfterStartMovingFramesInARow
   EXPECT_TRUE(held[13]) << "the second frame in a row turns it";
 }
 
-}  // namespace
-}  // namespace dynslam::frontend
-
-namespace dynslam::frontend {
-namespace {
-
 // Object ids are never reused and a street sees thousands of tracks a minute (bench-classification,
 // outdoor_street_high: 3388 tracks started in 20 s): what the classifier keeps per object is
 // forgotten once an object has not been decided for kObjectMemoryS, so a long run's memory and

@@ -160,10 +160,6 @@ TEST(AdaptiveRigidPointSet, ARotationPriorSteadiesAFarBodysRotation) {
   EXPECT_LT(with, 0.5 * without);
 }
 
-}  // namespace dynslam::frontend
-
-namespace dynslam::frontend {
-
 // A car 9 m away driving 10 cm across and 20 cm away per frame, read with exact depth; one of its
 // six corners (id 5) slides along its silhouette: its pixel stays while its depth follows the
 // car, 10 cm across its ray from where the car took it. That is within RANSAC's noise gate at
