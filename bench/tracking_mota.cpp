@@ -5,7 +5,8 @@
 //   build/bin/bench-tracking [--config params/sim/indoor_people_high.ini] [--frames N]
 //       [--miss-rate 0.1] [--jitter 3] [--min-visible 0.2] [--seed 1]
 //       [--depth segmentation|truth|box] [--true-depth-below V] [--report-coasting 1]
-//       [--sweep Tracking.rho_min=0.3,0.5,0.6,0.7,0.8]  ('' for none)
+//       [--sweep Tracking.rho_min=0.3,0.5,0.6,0.7,0.8[;Tracking.key2=a,b]]  ('' for none; one
+//                                                     key at a time)
 //       [--set Section.key=value]...   (Tracking.* goes to the tracker, Segmentation.* to the
 //                                       segmentation, the rest to the scenario)
 //       [--scenarios 2-13] [--seeds 1-24] [--jobs N]   (a set of runs: tracking_run_set.h)
@@ -16,7 +17,7 @@
 // read dynslam-sim's; the second renders the images again for the segmentation), detections from
 // GroundTruthDetector, object depth from DepthThresholdSegmenter (or the true depth: the median
 // depth of the person's visible pixels; or the tracker's box-median fallback), then the tracker
-// on the cached observations, once with the ini's settings and once per value of the sweep. Scoring
+// on the cached observations, once with the ini's settings and once per swept value. Scoring
 // rules (MotMetrics.h for the metrics):
 // - truth: every object in view; "counted" when at least --min-visible of it is visible (what
 //   the detector reports), else "don't care" (a hidden person cannot be demanded);
@@ -307,16 +308,26 @@ tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& o
   return stage.options().tracker;
 }
 
-/// --sweep "Tracking.key=v1,v2,...": the key and its values; an empty key for none.
-std::pair<std::string, std::vector<std::string>> sweepValues(const BenchSettings& s) {
-  if (s.sweep.empty()) return {};
-  const size_t eq = s.sweep.find('=');
-  if (eq == std::string::npos || s.sweep.rfind("Tracking.", 0) != 0)
-    throw core::UsageError("--sweep must read Tracking.key=v1,v2,..., not '" + s.sweep + "'");
-  std::vector<std::string> values;
-  std::stringstream items(s.sweep.substr(eq + 1));
-  for (std::string v; std::getline(items, v, ',');) values.push_back(v);
-  return {s.sweep.substr(0, eq), values};
+/// One swept setting: a key and one of its values.
+struct SweptValue {
+  std::string key, value;
+};
+
+/// --sweep "Tracking.key=v1,v2,...[;Tracking.key2=a,b]": each key's values, one key at a time
+/// (everything else as given; dynslam-sweep's --grid syntax, but no combinations). Empty: none.
+std::vector<SweptValue> sweepValues(const BenchSettings& s) {
+  std::vector<SweptValue> out;
+  std::stringstream groups(s.sweep);
+  for (std::string group; std::getline(groups, group, ';');) {
+    if (group.empty()) continue;
+    const size_t eq = group.find('=');
+    if (eq == std::string::npos || group.rfind("Tracking.", 0) != 0 || eq + 1 == group.size())
+      throw core::UsageError("--sweep must read Tracking.key=v1,v2,...[;Tracking.key2=...], not '" +
+                             s.sweep + "'");
+    std::stringstream items(group.substr(eq + 1));
+    for (std::string v; std::getline(items, v, ',');) out.push_back({group.substr(0, eq), v});
+  }
+  return out;
 }
 
 /// The tracker's settings with one swept key set to v (everything else as given).
@@ -410,25 +421,24 @@ void benchSimulation(const BenchSettings& s) {
                   counts.second);
     for (const auto& e : main.switchEvents) std::printf("  %s\n", e.c_str());
   }
-  const auto [key, values] = sweepValues(s);
-  if (key.empty()) return;
-  std::printf("\nsweep of %s (everything else as above)\n", key.c_str());
-  std::printf("  %12s   MOTA   IDF1  IDsw  frag    FP    FN  tracks\n", key.c_str() + 9);
-  for (const auto& v : values) {
+  const std::vector<SweptValue> swept = sweepValues(s);
+  if (swept.empty()) return;
+  std::printf("\nsweep (one key at a time, everything else as above)\n");
+  std::printf("  %28s   MOTA   IDF1  IDsw  frag    FP    FN  tracks\n", "setting");
+  for (const auto& [key, v] : swept) {
     const TrackerRun r = runTracker(run, sweptParams(s, key, v), s.report_coasting);
-    std::printf("  %12s  %5.3f  %5.3f  %4zu  %4zu  %4zu  %4zu  %6d\n", v.c_str(), r.mot.mota,
-                r.mot.idf1, r.mot.id_switches, r.mot.fragmentations, r.mot.false_positives,
-                r.mot.misses, r.tracks_started);
+    std::printf("  %28s  %5.3f  %5.3f  %4zu  %4zu  %4zu  %4zu  %6d\n",
+                (key.substr(9) + "=" + v).c_str(), r.mot.mota, r.mot.idf1, r.mot.id_switches,
+                r.mot.fragmentations, r.mot.false_positives, r.mot.misses, r.tracks_started);
   }
 }
 
 /// --scenarios / --seeds: the settings given and each sweep value over every run of the set.
 void benchSimulationSet(const BenchSettings& s, const std::vector<int>& scenarios,
                         const std::vector<int>& seeds, int jobs) {
-  const auto [key, values] = sweepValues(s);
   std::vector<tracking::KalmanBoxTrackerParams> params = {trackerParams(s.tracker_overrides)};
   std::vector<std::string> names = {"as given"};
-  for (const auto& v : values) {
+  for (const auto& [key, v] : sweepValues(s)) {
     params.push_back(sweptParams(s, key, v));
     names.push_back(key.substr(9) + "=" + v);
   }
@@ -456,7 +466,7 @@ int main(int argc, char** argv) {
       std::cout << "usage: bench-tracking [--config INI] [--frames N] [--miss-rate 0.1] "
                    "[--jitter 3] [--min-visible 0.2] [--seed 1] [--depth segmentation|truth|box] "
                    "[--true-depth-below V] [--report-coasting 1] [--sweep "
-                   "Tracking.key=v1,v2,...|''] [--set "
+                   "Tracking.key=v1,v2,...[;Tracking.key2=...]|''] [--set "
                    "Section.key=value]... [--identities] [--trace FIRST-LAST] "
                    "[--scenarios A-B] [--seeds A-B] [--jobs N] "
                    "[--video FILE --model ONNX --strip PNG [--video-frames N]]\n";
