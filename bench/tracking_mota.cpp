@@ -311,6 +311,8 @@ tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& o
 /// One swept setting: a key and one of its values.
 struct SweptValue {
   std::string key, value;
+  /// "key=value" without the "Tracking." prefix, as the printouts name the setting.
+  std::string label() const { return key.substr(9) + "=" + value; }
 };
 
 /// --sweep "Tracking.key=v1,v2,...[;Tracking.key2=a,b]": each key's values, one key at a time
@@ -425,11 +427,11 @@ void benchSimulation(const BenchSettings& s) {
   if (swept.empty()) return;
   std::printf("\nsweep (one key at a time, everything else as above)\n");
   std::printf("  %28s   MOTA   IDF1  IDsw  frag    FP    FN  tracks\n", "setting");
-  for (const auto& [key, v] : swept) {
-    const TrackerRun r = runTracker(run, sweptParams(s, key, v), s.report_coasting);
-    std::printf("  %28s  %5.3f  %5.3f  %4zu  %4zu  %4zu  %4zu  %6d\n",
-                (key.substr(9) + "=" + v).c_str(), r.mot.mota, r.mot.idf1, r.mot.id_switches,
-                r.mot.fragmentations, r.mot.false_positives, r.mot.misses, r.tracks_started);
+  for (const SweptValue& v : swept) {
+    const TrackerRun r = runTracker(run, sweptParams(s, v.key, v.value), s.report_coasting);
+    std::printf("  %28s  %5.3f  %5.3f  %4zu  %4zu  %4zu  %4zu  %6d\n", v.label().c_str(),
+                r.mot.mota, r.mot.idf1, r.mot.id_switches, r.mot.fragmentations,
+                r.mot.false_positives, r.mot.misses, r.tracks_started);
   }
 }
 
@@ -438,9 +440,9 @@ void benchSimulationSet(const BenchSettings& s, const std::vector<int>& scenario
                         const std::vector<int>& seeds, int jobs) {
   std::vector<tracking::KalmanBoxTrackerParams> params = {trackerParams(s.tracker_overrides)};
   std::vector<std::string> names = {"as given"};
-  for (const auto& [key, v] : sweepValues(s)) {
-    params.push_back(sweptParams(s, key, v));
-    names.push_back(key.substr(9) + "=" + v);
+  for (const SweptValue& v : sweepValues(s)) {
+    params.push_back(sweptParams(s, v.key, v.value));
+    names.push_back(v.label());
   }
   bench::benchRunSet(s, scenarios, seeds, jobs, names, [&](const CachedRun& run) {
     std::vector<bench::RunScore> scores;
