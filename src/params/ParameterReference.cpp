@@ -36,13 +36,12 @@ std::string tidyNumber(const std::string& v) {
   char* end = nullptr;
   const double d = std::strtod(v.c_str(), &end);
   if (v.empty() || end != v.c_str() + v.size()) return v;
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", d);
-  return buf;
+  return core::formatNumber(d);
 }
 
 /// A config "file" that keeps what saveToConfigFile writes, in order. MRPT hands over the key
-/// padded and the value as "value   // comment" (MRPT_SAVE_CONFIG_VAR_COMMENT's layout).
+/// padded and the value as "value   // comment" (MRPT_SAVE_CONFIG_VAR_COMMENT's layout). For
+/// the options structs that are a CLoadableOptions but not a core::Options (no describe()).
 class RecordingConfig : public mrpt::config::CConfigFileBase {
  public:
   std::vector<KeyDoc> keys;
@@ -70,6 +69,8 @@ class RecordingConfig : public mrpt::config::CConfigFileBase {
 };
 
 std::vector<KeyDoc> keysOf(const mrpt::config::CLoadableOptions& options) {
+  if (const auto* described = dynamic_cast<const core::Options*>(&options))
+    return core::describeKeys(*described);
   RecordingConfig rec;
   options.saveToConfigFile(rec, "s");
   return rec.keys;
@@ -149,7 +150,8 @@ std::vector<std::string> selectorValues(const KeyDoc& key) {
 }
 
 bool sameKey(const KeyDoc& a, const KeyDoc& b) {
-  return a.key == b.key && a.default_value == b.default_value && a.meaning == b.meaning;
+  return a.key == b.key && a.default_value == b.default_value && a.accepts == b.accepts &&
+         a.meaning == b.meaning;
 }
 
 /// saveToConfigFile writes only the chosen variant's keys; the stage is configured once per
@@ -211,7 +213,7 @@ std::vector<SectionDoc> collectParameters() {
       "Stages run in the order listed; each reads the section named after its "
       "class, or `Class:Section` gives it a section of its own (two instances of "
       "one class configured apart).",
-      {{"stages", "", "stage class names, separated by commas or blanks; registered: " + classes}}};
+      {{"stages", "", "", "stage class names, separated by commas or blanks; registered: " + classes}}};
   out.push_back(pipeline);
   out.push_back({io::SensorSync::kSection, "dynslam", "the runner (io::SensorSync)", "",
                  keysOf(io::SensorSyncOptions())});
@@ -255,8 +257,8 @@ std::string toMarkdown(const std::vector<SectionDoc>& sections) {
      << "`; do not edit: the test ParameterReference fails when this file and the code differ. "
         "-->\n\n"
      << "Every ini key the programs read (" << keys << " keys in " << sections.size()
-     << " sections), with its default and its meaning, as the options structs write them "
-        "(`saveToConfigFile`). Regenerate with `"
+     << " sections), with its default, the values it accepts and its meaning, as the options "
+        "structs describe them. Regenerate with `"
      << kRegenerateCommand << "`.\n\n"
      << "A key can be set in the ini file given to `--config` or on the command line with "
         "`--set Section.key=value`. Unknown sections and keys are errors that name them. A section "
@@ -275,11 +277,11 @@ std::string toMarkdown(const std::vector<SectionDoc>& sections) {
     md << "\n<a id=\"" << anchor(s) << "\"></a>\n## `[" << s.section << "]` (" << s.program
        << ")\n\nRead by " << s.owner << ".";
     if (!s.note.empty()) md << " " << s.note;
-    md << "\n\n| key | default | meaning |\n|---|---|---|\n";
+    md << "\n\n| key | default | accepts | meaning |\n|---|---|---|---|\n";
     for (const auto& k : s.keys)
       md << "| `" << k.key << "` | "
          << (k.default_value.empty() ? "*(empty)*" : "`" + markdownCell(k.default_value) + "`")
-         << " | " << markdownCell(k.meaning) << " |\n";
+         << " | " << markdownCell(k.accepts) << " | " << markdownCell(k.meaning) << " |\n";
   }
   return md.str();
 }

@@ -1,19 +1,17 @@
 #pragma once
 // The parameter reference (docs/parameters.md): every ini key the programs read, with its
-// default and its meaning, taken from the options structs themselves. Each registered stage is
-// configured once from an empty ini while a core::OptionsObserver records what its
-// saveToConfigFile() writes (core::writeKey: key, default, comment), so a new key or stage shows
-// up here without anyone listing it.
+// default, the values it accepts and its meaning, taken from the options structs themselves.
+// Each registered stage is configured once from an empty ini while a core::OptionsObserver
+// records the options structs it loads; each struct's describe() (core::Options) lists its keys,
+// so a new key or stage shows up here without anyone listing it.
+#include <dynslam/core/Options.h>
+
 #include <string>
 #include <vector>
 
 namespace dynslam::params {
 
-struct KeyDoc {
-  std::string key;
-  std::string default_value;  ///< as the ini would hold it ("" for an empty string)
-  std::string meaning;        ///< the comment saveToConfigFile writes beside it
-};
+using core::KeyDoc;
 
 struct SectionDoc {
   std::string section;  ///< the ini section, e.g. "Tracking"
@@ -27,7 +25,8 @@ struct SectionDoc {
 /// stage's sections in registry order) and of dynslam-sim's scenario files.
 std::vector<SectionDoc> collectParameters();
 
-/// The markdown page: a contents list, then one table (key | default | meaning) per section.
+/// The markdown page: a contents list, then one table (key | default | accepts | meaning) per
+/// section.
 std::string toMarkdown(const std::vector<SectionDoc>& sections);
 
 /// The command that regenerates docs/parameters.md (quoted in the page and in the test).

@@ -106,6 +106,7 @@ void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig&
   } catch (const std::invalid_argument& e) {  // a value readOneOf / readBool / ... refused
     throw ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
   }
+  if (t_optionsObserver) t_optionsObserver->loaded(options, section);
 }
 
 std::string readOneOf(const mrpt::config::CConfigFileBase& c, const std::string& section,

@@ -112,11 +112,14 @@ E readKeyword(const mrpt::config::CConfigFileBase& c, const std::string& section
 /// their defaults). The parameter reference (dynslam-params) configures every registered stage
 /// once with one installed, so it learns each stage's sections, keys, defaults and comments
 /// from the structs themselves instead of from a list that could drift.
+/// `dynslam --print-config` installs one to see each struct once it is loaded.
 class OptionsObserver {
  public:
   virtual ~OptionsObserver() = default;
   virtual void aboutToLoad(const mrpt::config::CLoadableOptions& options,
-                           const std::string& section) = 0;
+                           const std::string& section) {}
+  /// After the values of `section` were read into `options` and accepted.
+  virtual void loaded(const mrpt::config::CLoadableOptions& options, const std::string& section) {}
 };
 
 /// Installs `observer` for loadOptionsStrict calls made by the calling thread (nullptr: none);

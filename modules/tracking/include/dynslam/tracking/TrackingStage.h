@@ -12,15 +12,15 @@
 #include <dynslam/core/Stage.h>
 #include <dynslam/tracking/KalmanBoxTracker.h>
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <dynslam/core/Options.h>
 
 namespace dynslam::tracking {
 
-struct TrackingOptions : mrpt::config::CLoadableOptions {
+/// [Tracking]: every key, its range and meaning in describe() (TrackingStage.cpp).
+struct TrackingOptions : core::Options {
   KalmanBoxTrackerParams tracker;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 class TrackingStage : public core::Stage {
