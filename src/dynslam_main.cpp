@@ -1,5 +1,6 @@
 // dynslam: plays a rawlog through the stages an ini file configures and writes the trajectory.
 #include "runner/LiveView.h"
+#include "runner/RunConfiguration.h"
 #include "runner/Runner.h"
 
 #include <dynslam/core/CommandLine.h>
@@ -14,6 +15,7 @@ const char* kUsage =
                [--max-frames N] [--gt GT.tum] [--frames DIR [--no-video]] [--realtime]
                [--no-map] [--map-every N] [--map-voxel M] [--quiet]
                [--gui [--gui-rate HZ] [--gui-screenshot FILE.png]]
+       dynslam --config FILE.ini [--set section.key=value]... --print-config
 
 Plays FILE.rawlog (RGB-D CObservation3DRangeScan, CObservationIMU, CObservationGPS; observation
 or action/sensory-frame layout) through the stages listed in [pipeline] stages of FILE.ini, and
@@ -53,6 +55,9 @@ window closes when the run ends (map.3Dscene keeps the result for SceneViewer3D)
 window, or drawn off-screen from the window's viewpoint where software OpenGL reads the window
 back black).
 --set overrides one ini value (repeatable). Unknown keys, sections and stage names are errors.
+--print-config configures the stages as a run would and prints the configuration it would run
+with, as an ini (every key of every section read, the ini's values and the defaults of the rest,
+each with its meaning), then exits; nothing is read or written.
 Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 usage, 130 Ctrl-C.
 )";
 }  // namespace
@@ -69,10 +74,14 @@ int main(int argc, char** argv) {
     dynslam::core::CommandLine cl(
         {"--config", "--rawlog", "--out", "--max-frames", "--frames", "--gt", "--map-every",
          "--map-voxel", "--gui-rate", "--gui-screenshot"},
-        {"--quiet", "--realtime", "--no-video", "--no-map", "--gui"}, {"--set"});
+        {"--quiet", "--realtime", "--no-video", "--no-map", "--gui", "--print-config"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;
+      return 0;
+    }
+    if (cl.has("--print-config")) {
+      dynslam::runner::printEffectiveConfig(cl.required("--config"), cl.all("--set"), std::cout);
       return 0;
     }
     dynslam::runner::RunnerArgs args;

@@ -280,3 +280,25 @@ TEST(Runner, FeatureTrackingAndTheEstimatorFollowTheSyntheticRoom) {
   const std::string summary = readTextFile(dir + "/out/summary.json");
   EXPECT_NE(summary.find("\"solve_ms_median\""), std::string::npos) << summary;
 }
+
+TEST(Runner, PrintConfigWritesEveryKeyAtTheValueARunWouldUse) {
+  const auto ini = dynslam::testing::sourceDir() + "/params/7scenes_vo.ini";
+  const auto r = runCommand(binDir() + "/dynslam --config " + ini +
+                            " --set FeatureTracking.quality_level=0.02 --print-config 2>&1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The ini's value, an override, and a default the ini leaves out, each in its section.
+  const auto tracking = r.output.find("[FeatureTracking]");
+  const auto estimator = r.output.find("[Estimator]");
+  ASSERT_NE(tracking, std::string::npos) << r.output;
+  ASSERT_NE(estimator, std::string::npos) << r.output;
+  const auto at = [&](const std::string& line) { return r.output.find("\n" + line); };
+  EXPECT_GT(at("max_features = 300"), tracking) << r.output;
+  EXPECT_GT(at("quality_level = 0.02"), tracking) << r.output;
+  EXPECT_GT(at("window_size = 10"), estimator) << r.output;
+  EXPECT_NE(r.output.find("[SensorSync]"), std::string::npos) << r.output;
+
+  const auto bad = runCommand(binDir() + "/dynslam --config " + ini +
+                              " --set FeatureTracking.max_featres=3 --print-config 2>&1");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("unknown key 'max_featres'"), std::string::npos) << bad.output;
+}

@@ -2,15 +2,14 @@
 
 #include <dynslam/core/ProgressReporter.h>
 #include "AnnotatedOutput.h"
-#include "BuiltinStages.h"
 #include "GroundTruthScore.h"
 #include "KeyframeLog.h"
 #include "LiveView.h"
+#include "RunConfiguration.h"
 #include "TimingLog.h"
 
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Pipeline.h>
-#include <dynslam/core/StageRegistry.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/io/FrameReader.h>
 #include <dynslam/io/SensorSync.h>
@@ -232,15 +231,9 @@ int runDynslam(const RunnerArgs& args) {
       mapOptions.voxel_size = args.map_voxel_size;
       map.emplace(mapOptions);
     }
-    const auto cfg = core::IniConfig::fromFile(args.config, args.overrides);
-    core::StageRegistry registry;
-    registerBuiltinStages(registry);
-    pipeline.emplace(cfg, registry);
-    io::SensorSyncOptions syncOptions;
-    core::loadOptionsStrict(syncOptions, cfg, io::SensorSync::kSection);
-    auto known = pipeline->sectionsUsed();
-    known.push_back(io::SensorSync::kSection);
-    core::rejectUnknownSections(cfg, known);
+    auto configured = configureRun(core::IniConfig::fromFile(args.config, args.overrides));
+    pipeline.emplace(std::move(configured.pipeline));
+    const io::SensorSyncOptions syncOptions = configured.sync;
     timing.emplace((fs::path(args.out) / "timing.csv").string(), *pipeline);
     rec.estimator = pipeline->estimatesPose();
     if (rec.estimator) keyframeLog.emplace((fs::path(args.out) / "keyframes.csv").string());
