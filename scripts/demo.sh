@@ -11,8 +11,12 @@
 # through params/7scenes_rgbd_odometry.ini (the dense RGB-D odometry baseline).
 #
 #   bash scripts/demo.sh [--input sim|7scenes] [--config params/FILE.ini] [--no-build]
+#                        [--set Section.key=value]...
 #
 # --no-build uses the programs already in $BUILD_DIR/bin (no package check, no build).
+# --set is handed to dynslam (repeatable), e.g. --set Estimator.max_solver_time=100: the
+# estimator's solves then stop on their iteration count, not the clock, and the trajectory is
+# the same to the byte from run to run, whatever else the machine is doing.
 # Outputs in build/demo/<input>_run: trajectory.tum, objects/ID.tum, map.3Dscene (open it with
 # SceneViewer3D), timing.csv, summary.json (with the APE), frames/ (annotated PNGs and
 # annotated.avi), ape.json and ape.png (dynslam-eval's plot).
@@ -22,12 +26,14 @@ BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 INPUT=sim
 CONFIG=""
 BUILD=1
+SETS=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --input) INPUT="$2"; shift 2 ;;
     --config) CONFIG="$2"; shift 2 ;;
     --no-build) BUILD=0; shift ;;
-    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --set) SETS+=(--set "$2"); shift 2 ;;
+    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "demo: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -75,7 +81,7 @@ else
 fi
 
 "$BIN/dynslam" --config "$CONFIG" --rawlog "$RAWLOG" --out "$RUN" --gt "$GT" \
-  --frames "$RUN/frames" "${EXTRA[@]}"
+  --frames "$RUN/frames" "${EXTRA[@]}" "${SETS[@]}"
 "$BIN/dynslam-eval" ape "$GT" "$RUN/trajectory.tum" --align se3 \
   --json "$RUN/ape.json" --plot "$RUN/ape.png" >/dev/null
 
