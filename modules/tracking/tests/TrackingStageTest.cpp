@@ -117,6 +117,21 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   EXPECT_EQ(errorOf("[Tracking]\n"), "");
 }
 
+TEST(TrackingStage, ASettingWithoutTheOneItActsThroughIsAnErrorNamingBoth) {
+  const std::string reid = "reid_max_distance = 0.7\nreid_memory = 10\n";
+  const std::string msg = errorOf("[Tracking]\n" + reid + "identity_repair = 10\n");
+  EXPECT_NE(msg.find("identity_repair"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("identity_check"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("test.ini"), std::string::npos) << msg;
+  EXPECT_EQ(errorOf("[Tracking]\n" + reid + "identity_check = 0.05\nidentity_repair = 10\n"), "");
+  EXPECT_NE(errorOf("[Tracking]\nidentity_check = 0.05\n").find("reid_max_distance"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\nalternative_depth_tracks = true\n").find("alternative_depth"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_speed = 1.5\n").find("depth_gate > 0"),
+            std::string::npos);
+}
+
 TEST(TrackingStage, FramesWithoutFreshDetectionsCarryPredictedBoxes) {
   TrackingStage stage;
   stage.configure(core::IniConfig::fromText("[Tracking]\n"), "Tracking");
