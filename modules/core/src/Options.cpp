@@ -92,9 +92,11 @@ class Loader : public OptionVisitor {
             const std::string&) override {
     value = readOneOf(c_, section_, name, value, words);
   }
+  /// Only a key the section itself sets: a default that acts through a setting the ini turned
+  /// off (reid_max_distance = 0 with reid_memory's default) is the ini's intent, not a mistake.
   void requires(const std::string& name, bool is_set, const std::string& needed,
                 bool needed_holds) override {
-    requireBoth(name, is_set, needed, needed_holds);
+    if (present(name)) requireBoth(name, is_set, needed, needed_holds);
   }
 
  private:

@@ -90,6 +90,15 @@ TEST(Options, SettingThatNeedsAnotherIsAnErrorNamingBoth) {
   EXPECT_EQ(loadError("[Ex]\nrefine = true\n"), "") << "the needed one alone is fine";
 }
 
+TEST(Options, ADefaultThatNeedsASettingTheIniTurnsOffIsNoError) {
+  struct Defaulted : ExampleOptions {
+    Defaulted() { refine = true, refine_steps = 5; }
+  };
+  Defaulted o;
+  EXPECT_NO_THROW(loadOptionsStrict(o, IniConfig::fromText("[Ex]\nrefine = false\n"), "Ex"));
+  EXPECT_FALSE(o.refine);
+}
+
 TEST(Options, UnknownKeyIsStillAnError) {
   EXPECT_TRUE(contains(loadError("[Ex]\nthresold = 0.2\n"), "unknown key 'thresold'"));
 }

@@ -4,7 +4,7 @@
 // what it means; reading with range checks, writing, the strict unknown-key check and the
 // parameter reference (docs/parameters.md) are all driven by that one list. A setting that acts
 // only together with another says so there too (OptionVisitor::requires), and loading fails,
-// naming both keys, when it is set without the other.
+// naming both keys, when an ini sets it without the other.
 //
 //   void TrackingOptions::describe(core::OptionVisitor& v) {
 //     v.key("rho_min", tracker.rho_min, core::Range::closedOpen(0, 1),
@@ -70,8 +70,9 @@ class OptionVisitor {
       if (text == w.word) value = w.value;
   }
 
-  /// `name` acts only while `needed` holds: a loader refuses `name` set (`is_set`) while
-  /// `needed` does not (`needed_holds`), naming both. Call it after both keys.
+  /// `name` acts only while `needed` holds: a loader refuses `name` set (`is_set`) by the
+  /// section it reads while `needed` does not hold (`needed_holds`), naming both. Call it after
+  /// both keys.
   virtual void requires(const std::string& name, bool is_set, const std::string& needed,
                         bool needed_holds) {
     (void)name, (void)is_set, (void)needed, (void)needed_holds;
