@@ -26,8 +26,8 @@ void KalmanBoxTracker::predict(double t) {
     const BoxState& x = tr.filter.state();
     // While coasting the box keeps its size and depth: over more than a few frames a linear
     // extrapolation of the area goes badly wrong (people turn round, boxes are clipped at the image
-    // border; a box extrapolated for 1.5 s shrank to 20 x 38 px in bench-tracking), and a shrinking
-    // box is never re-associated. SORT only stops it from turning negative.
+    // border), and a shrinking box is never re-associated. SORT only stops it from turning
+    // negative. Measured: docs/notes/perception.md, 2026-11-28 (coasting).
     if (tr.track.misses > 0 || x(kS) + dt * x(kRateS) <= 0) tr.filter.stopAreaRate();
     if (tr.track.misses > 0) tr.filter.stopDepthRate();  // likewise for the depth
     tr.filter.predict(dt, processNoise(params_.noise, tr.filter.state(), dt));
@@ -58,12 +58,12 @@ bool occluded(const std::vector<BoxObservation>& observations, size_t j) {
 
 // Tracks seen on one of the last this many frames count as a surface on this one
 // (descriptor_own_surface, alternative_depth_tracks). A track coasting longer has a drifting
-// prediction, and the person it lost is the likeliest one standing there (bench-tracking,
-// segmentation depth, 24 seeds: IDF1 0.780 with every track against 0.802 with these).
+// prediction, and the person it lost is the likeliest one standing there. Measured:
+// docs/notes/perception.md, 2026-11-28 (descriptor_own_surface).
 constexpr int kRecentMisses = 1;
 
-// Cluster means of one surface measured in two boxes agree within a few per cent
-// (bench-segmentation: median d_t error 2 %); two people a pace apart differ by 20 % and more.
+// Cluster means of one surface measured in two boxes agree within a few per cent; two people a
+// pace apart differ by 20 % and more (docs/notes/perception.md, 2026-11-28, surfaces).
 constexpr double kSameSurfaceRatio = 0.85;
 
 /// True when `depth` is the surface at `surface` (m): within kSameSurfaceRatio of it and nearer
@@ -110,7 +110,7 @@ struct TrackSurface {
 /// (box IoU <= maxOwnIoU, so its depth IoU cannot pass rho_min): the occluder of a partly
 /// hidden person whose own detection the detector missed on this frame. (Asking the track's
 /// box to cover a fifth of the detection's, as onOthersSurface does, gained less:
-/// bench-tracking, choreographies 2-13 x seeds 1-4, IDF1 0.7209 -> 0.7230 against 0.7300.)
+/// docs/notes/perception.md, 2026-11-28, alternative_depth_tracks.)
 bool surfaceOfTrack(const std::vector<TrackSurface>& tracks, const cv::Rect2f& box, double depth,
                     double otherDepth, double maxOwnIoU) {
   for (const TrackSurface& t : tracks) {
@@ -124,9 +124,8 @@ bool surfaceOfTrack(const std::vector<TrackSurface>& tracks, const cv::Rect2f& b
 /// segmentation chose is another detection's surface (a partly hidden person given its
 /// occluder's depth), or where d_alt is the nearer cluster and nobody else's (a person given the
 /// wall behind it). Otherwise a track whose depth had once gone to the wrong surface kept taking
-/// that surface through d_alt and never came back: with the shipped [Retrack] the d_t of
-/// unoccluded people erred 9.5 % on average against 5.6 % without it (bench-segmentation
-/// --pipeline, indoor_people_high seed 1).
+/// that surface through d_alt and never came back (docs/notes/perception.md, 2026-11-28,
+/// alternative_depth).
 std::vector<BoxObservation> withOwnedAlternatives(std::vector<BoxObservation> observations,
                                                   const std::vector<TrackSurface>& tracks,
                                                   double maxOwnIoU) {
@@ -186,7 +185,8 @@ BoxMeasurement KalmanBoxTracker::measurementFor(Tracked& tr, const cv::Rect2f& b
   // The jump is measured from the last depth the track took, not from its prediction: the
   // prediction runs on with the depth rate, and a person who turns round (0.04 m a frame
   // towards the camera, then away) soon differs from it by more than the gate, which then held
-  // the depth on the wrong side until the track was lost (bench-tracking, true depth, seed 4).
+  // the depth on the wrong side until the track was lost (docs/notes/perception.md, 2026-11-28,
+  // depth_gate).
   const double reference = tr.last_depth > 0 ? tr.last_depth : predicted;
   // depth_gate_speed: how far the person may have walked since the track last took a depth.
   const double walked =
@@ -258,9 +258,8 @@ std::vector<char> KalmanBoxTracker::onOthersSurface(const std::vector<BoxObserva
 
 namespace {
 
-// Views of one person one frame apart: Bhattacharyya distance median 0.11, p90 0.21-0.26
-// (bench-tracking's "appearance" line); a view farther from an identity than this is someone
-// else's or an occluded one.
+// A view farther from an identity than this is someone else's or an occluded one: views of one
+// person one frame apart lie well within it (docs/notes/perception.md, 2026-11-28, identity_check).
 constexpr double kConsistentWithIdentity = 0.35;
 
 }  // namespace
@@ -285,17 +284,15 @@ void KalmanBoxTracker::repairIdentity(size_t index) {
   Tracked& t = tracked_[index];
   t.inconsistent_views = 0;
   // Only lost ids: giving a track a coasting track's id (whose person is likelier just hidden
-  // than on this track) lost more than it won (bench-tracking, 24 seeds: IDF1 0.828 -> 0.833
-  // with both, 0.812 with coasting ones alone, 0.844 with lost ones alone).
-  // With identity_check every remembered track has an identity: a track's first descriptor
-  // starts it (updateIdentity), and only described tracks are remembered.
+  // than on this track) lost more than it won (docs/notes/perception.md, 2026-11-28,
+  // identity_repair). With identity_check every remembered track has an identity: a track's first
+  // descriptor starts it (updateIdentity), and only described tracks are remembered.
   double best = std::min(kConsistentWithIdentity,
                          appearanceDistance(t.identity, t.appearance) - params_.identity_check);
-  const int found =
-      closestRemembered(t, [](const Remembered& r) -> const cv::Mat& { return r.identity; }, best);
+  const int found = closestRemembered(
+      t, [](const Remembered& r) -> const cv::Mat& { return r.identity; }, best);
   if (found < 0) return;
-  Remembered old{t.track.id, t.track.category, t.appearance, last_t_, t.identity,
-                 t.identity_views};
+  Remembered old{t.track.id, t.track.category, t.appearance, last_t_, t.identity, t.identity_views};
   Remembered& r = remembered_[found];
   t.track.id = r.id;
   t.identity = r.identity;
@@ -401,9 +398,8 @@ void KalmanBoxTracker::update(const std::vector<BoxObservation>& input, const cv
     if (loseAfterMiss(tr, image)) {
       ++lost_;
       if (remembers() && tr.track.state == core::TrackState::Confirmed && !tr.appearance.empty())
-        remembered_.push_back(
-            {tr.track.id, tr.track.category, tr.appearance, last_t_, tr.identity,
-             tr.identity_views});
+        remembered_.push_back({tr.track.id, tr.track.category, tr.appearance, last_t_, tr.identity,
+                               tr.identity_views});
       continue;
     }
     kept.push_back(std::move(tr));
@@ -457,8 +453,8 @@ void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observation
         const double depth = tr.filter.state()(kD);
         // The colours at the track's depth count only for a detection given another's
         // surface: otherwise its depth is its own, and a box with something at the track's
-        // depth is one that hides the track's person (looked at for every detection, in the
-        // revival too: true-depth IDF1 0.894 -> 0.840).
+        // depth is one that hides the track's person (docs/notes/perception.md, 2026-11-28,
+        // reid_at_track_depth).
         bool atDepth = false;
         const size_t j = size_t(&o - observations.data());
         const double distance = onAnothersSurface[j]
@@ -527,8 +523,8 @@ void KalmanBoxTracker::reviveIdentity(size_t index) {
     if (k == index || o.track.state != core::TrackState::Confirmed || o.track.misses == 0 ||
         o.track.category != t.track.category || o.appearance.empty())
       continue;
-    const double d = appearanceDistance(
-        describedAs(o.appearance, o.identity, o.identity_views), t.appearance);
+    const double d =
+        appearanceDistance(describedAs(o.appearance, o.identity, o.identity_views), t.appearance);
     if (d < best) best = d, coasting = int(k), remembered = -1;
   }
   auto takeIdentity = [&](const cv::Mat& identity, int views) {

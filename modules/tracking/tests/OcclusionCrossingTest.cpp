@@ -12,7 +12,7 @@
 // with the paper's 0.7 plus the colour re-identification, reid_max_distance 0.7 and reid_memory
 // 10): with the paper's 0.7 alone the reappearing person is taken up again in only a few of the
 // seeds (the prediction after 1.2 s of coasting is off by a fifth of the box: the gait swings the
-// box width by +-30 %), which bench-tracking measures on indoor_people_high too.
+// box width).
 #include <dynslam/core/Config.h>
 #include <dynslam/sim/Simulator.h>
 #include <dynslam/tracking/TrackingStage.h>

@@ -130,8 +130,8 @@ TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPredic
 
 // A confirmed track matched on the last frame that loses its detection is not re-found by
 // colour in the same frame: a second person of similar colours stepping out from behind it as
-// the detector misses the first one would take its id (the swap bench-tracking found on
-// indoor_people_high). It coasts instead.
+// the detector misses the first one would take its id (a swap bench-tracking found:
+// docs/notes/perception.md, 2026-11-28, reid_max_distance). It coasts instead.
 TEST(TrackingKalmanBoxTracker, ReidentificationWaitsForATrackToCoast) {
   KalmanBoxTrackerParams params;
   params.reid_max_distance = 0.4;
@@ -222,7 +222,7 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryWaitsForANewTracksFirstDescriptor) {
 // the near person's depth band, shows green. Without descriptor_own_surface the new track is
 // confirmed with it and reid_memory gives it the near person's id, whose next detection then
 // starts a new track; with it the descriptor is not the new track's, and the near person keeps
-// its id (bench-tracking, segmentation depth, seed 2, frames 587-589).
+// its id (as bench-tracking found: docs/notes/perception.md, 2026-11-28, descriptor_own_surface).
 TEST(TrackingKalmanBoxTracker, DescriptorsOnAnotherTracksSurfaceAreNotTaken) {
   auto run = [](bool ownSurface) {
     KalmanBoxTrackerParams params;
@@ -317,9 +317,9 @@ TEST(TrackingKalmanBoxTracker, IdentityRepairGivesATrackTheLostIdOfThePersonItFo
 // id now sits on the other's person. When the revived track takes over id 2's identity
 // descriptor (9 views of B: a new track takes none on its first frame), identity_check sees each
 // track's views match the other's identity and swaps the ids back; when it keeps its own first
-// views as identity, both identities describe A and nothing tells (bench-tracking, true depth,
-// choreography 8 seed 4: 400 frames on the other's id). revival_takes_identity = 30 asks for
-// more views than id 2's identity took.
+// views as identity, both identities describe A and nothing tells (as bench-tracking found:
+// docs/notes/perception.md, 2026-11-28, revival_takes_identity). revival_takes_identity = 30 asks
+// for more views than id 2's identity took.
 TEST(TrackingKalmanBoxTracker, ARevivedIdKeepsItsIdentitySoAWrongRevivalIsSwappedBack) {
   auto dressedAlike = [](BoxObservation o, int bin) {
     o.appearance = cv::Mat::zeros(1, kAppearanceBins, CV_32F);
