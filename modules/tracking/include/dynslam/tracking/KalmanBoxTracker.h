@@ -175,88 +175,6 @@ class KalmanBoxTracker {
     bool described_now = false;           // `appearance` took this update()'s detection
     int inconsistent_views = 0;           // identity_repair: views in a row far from `identity`
   };
-
-  /// The measurement of a matched observation: box and the depth `depth` (<= 0: none), or,
-  /// when depth_gate holds it, the box with the track's own depth as unknown. The gate holds a
-  /// confirmed track's depth when `depth` is more than depth_gate off the last depth the track
-  /// took, and farther than a person walking at depth_gate_speed could have gone since, for up
-  /// to depth_gate_frames frames in a row; then the measurement counts again, so a track that
-  /// is itself on a wrong surface comes back.
-  BoxMeasurement measurementFor(Tracked& tr, const cv::Rect2f& box, double depth,
-                                BoxMeasurementCovariance& R) const;
-
-  /// The depth of `o` that `tr` is compared with and updated by: o.depth, or with
-  /// alternative_depth the one of o.depth and o.depth_alt nearer (in ratio) the track's depth.
-  double depthFor(const Tracked& tr, const BoxObservation& o) const;
-  /// One assignment round: the tracks without an observation yet (only those already coasting
-  /// when `coastingOnly`) against the observations not used yet, by the Hungarian algorithm on
-  /// the depth IoU, pairs accepted when rho > threshold. Predicted boxes are clipped to `image`
-  /// (when given) as detections are.
-  void associate(const std::vector<BoxObservation>& observations, const cv::Size& image,
-                 double threshold, bool coastingOnly, std::vector<int>& observationOf,
-                 std::vector<char>& observationUsed) const;
-  /// Records `round` as the match of the tracks given an observation since the last call.
-  void noteRound(const std::vector<int>& observationOf, TrackMatch round);
-  /// innovation_gate: the squared Mahalanobis distance of `box`'s centre from `predicted`'s
-  /// (the track's predicted box, clipped as the detection is) under the filter's position
-  /// covariance plus meas_center_px^2.
-  double centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
-                           const cv::Rect2f& box) const;
-  void startTrack(const BoxObservation& observation, int index);
-  /// reid_max_distance > 0: the appearance round. A confirmed track still unmatched that was
-  /// already coasting takes an unmatched detection of its category whose descriptor is closer
-  /// than reid_max_distance, whose centre lies within reid_max_shift box heights of the
-  /// prediction and whose depth within a factor 1.5 of the track's; best appearance first
-  /// (Hungarian). A track matched on the frame before coasts one frame first: a person of
-  /// similar colours stepping out from behind it as the detector missed it would take its id.
-  /// `onAnothersSurface`: givenAnothersSurface per observation (read with reid_at_track_depth).
-  void reidentify(const std::vector<BoxObservation>& observations,
-                  const std::vector<char>& onAnothersSurface, std::vector<int>& observationOf,
-                  std::vector<char>& observationUsed) const;
-  /// reset_at_border: on a box touching the image border, restarts the filter's area, aspect
-  /// ratio and the cut axis' centre from the measurement, with zero rates (the next prediction
-  /// is the box as seen).
-  void restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box, const BoxMeasurement& z,
-                            const cv::Size& image) const;
-  /// descriptor_own_surface: per observation, whether its depth is the surface of another
-  /// observation (`onAnothersSurface`, givenAnothersSurface per observation) or of another track
-  /// seen on the last frame or coasting since then whose predicted box covers more than a fifth
-  /// of the observation's (depths within 15 %), given the association so far. Tracks coasting
-  /// longer are left out: their prediction drifts, and the person they lost is the likeliest
-  /// one to be standing there.
-  std::vector<char> onOthersSurface(const std::vector<BoxObservation>& observations,
-                                    const std::vector<int>& observationOf,
-                                    std::vector<char> onAnothersSurface) const;
-  /// reid_memory: tracked_[index] (just confirmed, or confirmed before and given its first
-  /// descriptor now) takes the id of the remembered or coasting confirmed track of closest
-  /// appearance, when closer than reid_max_distance, wherever it is; that one is forgotten (a
-  /// coasting one is marked Lost, to be removed by the caller). With revival_takes_identity, an
-  /// id whose identity descriptor took at least that many views is compared by it and goes with
-  /// the id, as on a swap or a repair.
-  void reviveIdentity(size_t index);
-  /// identity_check: `descriptor` (a view the running descriptor took) updates the track's slow
-  /// identity descriptor (weight 0.95 on the old) when it lies within 0.35 of it, and counts as
-  /// an inconsistent view otherwise.
-  void updateIdentity(Tracked& tr, const cv::Mat& descriptor) const;
-  /// identity_check: swaps the ids (and identity descriptors) of two confirmed tracks described
-  /// this frame when each one's running descriptor is nearer the other's identity, summed over
-  /// the two, by more than identity_check.
-  void checkIdentities();
-  /// identity_repair: tracked_[index], whose last identity_repair views were all inconsistent
-  /// with its identity, takes the remembered lost id whose identity lies within 0.35 of its
-  /// running descriptor and nearer it than its own identity by identity_check; its old id and
-  /// identity are remembered in their place, for its person's next new track to be revived into.
-  void repairIdentity(size_t index);
-  /// The appearance distance of a track's descriptor `a` (the track at `depth`) to observation
-  /// `o`: to o's own descriptor, or with reid_at_track_depth the smaller of that and the one to
-  /// o's colours at `depth` when below reid_at_track_depth; `atDepth` tells whether the latter
-  /// decided (the depth factor is then waived). Not in the revival: there a new track's box
-  /// that hid a coasting person took that person's identity.
-  double reidDistance(const cv::Mat& a, double depth, const BoxObservation& o, bool& atDepth) const;
-  bool remembers() const { return params_.reid_memory > 0 && params_.reid_max_distance > 0; }
-  /// True when the unmatched track `t` is to be dropped now.
-  bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
-
   struct Remembered {
     int id = 0;
     std::string category;
@@ -265,12 +183,58 @@ class KalmanBoxTracker {
     cv::Mat identity = {};   // identity_check's descriptor; empty without
     int identity_views = 0;  // views that identity took
   };
-  /// The index in remembered_ of the entry of t's category whose descriptor (`descriptorOf` the
-  /// entry: its identity, its running descriptor or either) lies nearest t's running
-  /// descriptor, if nearer than `best` (then lowered to its distance); -1 otherwise.
+  /// The association of one update(): per track the observation it takes (-1: none), per
+  /// observation whether a track took it.
+  struct Association {
+    std::vector<int> observationOf;
+    std::vector<char> observationUsed;
+  };
+
+  // Each function is described where it is defined.
+  // KalmanBoxTracker.cpp: update()'s phases and the lifecycle of one track.
+  std::vector<size_t> updateTracks(const std::vector<BoxObservation>& observations,
+                                   const std::vector<int>& observationOf,
+                                   const std::vector<char>& othersSurface, const cv::Size& image);
+  bool takeObservation(Tracked& tr, const std::vector<BoxObservation>& observations, size_t j,
+                       bool onOthersSurface, const cv::Size& image);
+  bool missed(Tracked& tr, const cv::Size& image);
+  BoxMeasurement measurementFor(Tracked& tr, const cv::Rect2f& box, double depth,
+                                BoxMeasurementCovariance& R) const;
+  void restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box, const BoxMeasurement& z,
+                            const cv::Size& image) const;
+  bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
+  void startTrack(const BoxObservation& observation, int index);
+  void noteRound(const std::vector<int>& observationOf, TrackMatch round);
+
+  // KalmanBoxTrackerAssociation.cpp: the depth-IoU rounds.
+  std::vector<BoxObservation> withUsableAlternatives(const std::vector<BoxObservation>& input,
+                                                     const cv::Size& image) const;
+  void associateByDepthIoU(const std::vector<BoxObservation>& observations, const cv::Size& image,
+                           Association& a);
+  double depthFor(const Tracked& tr, const BoxObservation& o) const;
+  void associate(const std::vector<BoxObservation>& observations, const cv::Size& image,
+                 double threshold, bool coastingOnly, Association& a) const;
+  double centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
+                           const cv::Rect2f& box) const;
+
+  // KalmanBoxTrackerIdentity.cpp: appearance, identities and the revival.
+  void reidentify(const std::vector<BoxObservation>& observations,
+                  const std::vector<char>& onAnothersSurface, Association& a) const;
+  double reidDistance(const cv::Mat& a, double depth, const BoxObservation& o, bool& atDepth) const;
+  std::vector<char> onOthersSurface(const std::vector<BoxObservation>& observations,
+                                    const std::vector<int>& observationOf,
+                                    std::vector<char> onAnothersSurface) const;
+  void takeDescriptor(Tracked& tr, const cv::Mat& descriptor) const;
+  void updateIdentity(Tracked& tr, const cv::Mat& descriptor) const;
+  void checkAndRepairIdentities();
+  void checkIdentities();
+  void repairIdentity(size_t index);
+  void reviveIdentities(const std::vector<size_t>& confirmed);
+  void reviveIdentity(size_t index);
   int closestRemembered(const Tracked& t,
                         const std::function<const cv::Mat&(const Remembered&)>& descriptorOf,
                         double& best) const;
+  bool remembers() const { return params_.reid_memory > 0 && params_.reid_max_distance > 0; }
 
   KalmanBoxTrackerParams params_;
   std::vector<Tracked> tracked_;
