@@ -175,13 +175,14 @@ TEST(TrackingOcclusion, PersonHiddenBehindAnotherKeepsItsId) {
   ASSERT_LT(undetectedLast + 10, r.truth.size()) << "and seen again after";
 
   // The settings that bridge the hide: a lower threshold for coasting tracks, or the paper's 0.7
-  // with the colour re-identification (reid_max_distance, reid_memory, Appearance.h), or the
-  // simulator inis' tracker (rho_min 0.5, the re-identification, innovation_gate, no round).
-  for (const char* settings :
-       {"rho_min = 0.5\nrho_min_coasting = 0.3\n",
-        "rho_min = 0.7\nreid_max_distance = 0.7\nreid_memory = 10\n",
-        "rho_min = 0.5\nmin_hits = 2\nreid_max_distance = 0.7\nreid_memory = 10\n"
-        "innovation_gate = 50\ndepth_gate = 0.15\n"})
+  // with the colour re-identification (reid_max_distance 0.7, reid_memory 10: the defaults),
+  // each without the defaults' other departures; or the defaults (the shipped tracker: rho_min
+  // 0.5, the re-identification, innovation_gate, depth_gate, no second round).
+  const std::string noGates = "alternative_depth = false\ndepth_gate = 0\ninnovation_gate = 0\n";
+  for (const std::string& settings :
+       {noGates + "min_hits = 3\nreid_max_distance = 0\nreid_memory = 0\nrho_min = 0.5\n"
+                  "rho_min_coasting = 0.3\n",
+        noGates + "min_hits = 3\nrho_min = 0.7\n", std::string()})
     for (uint32_t seed : {1u, 2u, 3u, 4u}) {
       SCOPED_TRACE(settings);
       const IdsSeen ids = runStage(r, settings, seed, undetectedFirst, undetectedLast);

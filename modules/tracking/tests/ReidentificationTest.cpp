@@ -75,7 +75,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGiven
   const cv::Mat green(480, 640, CV_8UC3, cv::Scalar(0, 200, 0));
   const cv::Mat near(480, 640, CV_32FC1, cv::Scalar(1.5f));
   auto run = [&](double atTrackDepth, const cv::Mat& img, const cv::Mat& z) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.reid_at_track_depth = atTrackDepth;
     KalmanBoxTracker tracker(params);
@@ -111,7 +111,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGiven
 // a differently dressed person appearing at the same spot is not taken for it.
 TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPrediction) {
   auto run = [](double reid, int reappearingColour) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = reid;
     KalmanBoxTracker tracker(params);
     int k = 0;
@@ -133,7 +133,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPredic
 // the detector misses the first one would take its id (a swap bench-tracking found:
 // docs/notes/perception.md, 2026-11-28, reid_max_distance). It coasts instead.
 TEST(TrackingKalmanBoxTracker, ReidentificationWaitsForATrackToCoast) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.reid_max_distance = 0.4;
   KalmanBoxTracker tracker(params);
   int k = 0;
@@ -150,7 +150,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationWaitsForATrackToCoast) {
 // confirmed; someone dressed otherwise gets a new one; without memory the id is new.
 TEST(TrackingKalmanBoxTracker, ReidMemoryGivesAReturningPersonItsId) {
   auto run = [](double memory, int returningColour) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.reid_memory = memory;
     KalmanBoxTracker tracker(params);
@@ -175,7 +175,7 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryGivesAReturningPersonItsId) {
 // A track coasting after its person's measured depth jumped (an arm at the image border): the
 // person's new track, once confirmed, takes the coasting track's id, and the coasting one goes.
 TEST(TrackingKalmanBoxTracker, ReidMemoryMergesANewTrackIntoACoastingOne) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.reid_max_distance = 0.4;
   params.reid_memory = 10;
   params.reset_at_border = false;
@@ -194,7 +194,7 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryMergesANewTrackIntoACoastingOne) {
 // A returning person's first detections have no descriptor (no depth in its box yet): its new
 // track is confirmed without one, and takes the lost track's id once a descriptor comes.
 TEST(TrackingKalmanBoxTracker, ReidMemoryWaitsForANewTracksFirstDescriptor) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.reid_max_distance = 0.4;
   params.reid_memory = 10;
   KalmanBoxTracker tracker(params);
@@ -225,7 +225,7 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryWaitsForANewTracksFirstDescriptor) {
 // its id (as bench-tracking found: docs/notes/perception.md, 2026-11-28, descriptor_own_surface).
 TEST(TrackingKalmanBoxTracker, DescriptorsOnAnotherTracksSurfaceAreNotTaken) {
   auto run = [](bool ownSurface) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.min_hits = 2;
     params.reid_max_distance = 0.4;
     params.reid_memory = 10;
@@ -255,7 +255,7 @@ TEST(TrackingKalmanBoxTracker, DescriptorsOnAnotherTracksSurfaceAreNotTaken) {
 // go back to the people within a few frames.
 TEST(TrackingKalmanBoxTracker, IdentityCheckSwapsIdsBackAfterAnAssociationSwappedThem) {
   auto idOfColour3 = [](double identityCheck) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.identity_check = identityCheck;
     KalmanBoxTracker tracker(params);
@@ -286,7 +286,7 @@ TEST(TrackingKalmanBoxTracker, IdentityCheckSwapsIdsBackAfterAnAssociationSwappe
 // identity its views match. A colour nobody had leaves the id alone.
 TEST(TrackingKalmanBoxTracker, IdentityRepairGivesATrackTheLostIdOfThePersonItFollows) {
   auto idAfter = [](int repair, int newColour) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.reid_memory = 10;
     params.identity_check = 0.1;
@@ -328,7 +328,7 @@ TEST(TrackingKalmanBoxTracker, ARevivedIdKeepsItsIdentitySoAWrongRevivalIsSwappe
     return o;
   };
   auto idsOfAAndB = [&](int takesIdentity) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.75;
     params.reid_memory = 10;
     params.identity_check = 0.1;

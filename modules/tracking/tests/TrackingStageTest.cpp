@@ -50,13 +50,13 @@ TEST(TrackingStage, RegisteredAndConfiguredFromItsSection) {
   auto stage = registry.create("Tracking");
   ASSERT_TRUE(dynamic_cast<TrackingStage*>(stage.get()));
   stage->configure(
-      core::IniConfig::fromText("[Tracking]\nrho_min = 0.5\nmax_age = 12\nmin_hits = 2\n"
+      core::IniConfig::fromText("[Tracking]\nrho_min = 0.6\nmax_age = 12\nmin_hits = 4\n"
                                 "meas_center_px = 4.5\naccel_depth = 0.5\n"),
       "Tracking");
   const auto& o = static_cast<TrackingStage&>(*stage).options().tracker;
-  EXPECT_EQ(o.rho_min, 0.5);
+  EXPECT_EQ(o.rho_min, 0.6);
   EXPECT_EQ(o.max_age, 12);
-  EXPECT_EQ(o.min_hits, 2);
+  EXPECT_EQ(o.min_hits, 4);
   EXPECT_EQ(o.noise.meas_center_px, 4.5);
   EXPECT_EQ(o.noise.accel_depth, 0.5);
   EXPECT_EQ(o.noise.meas_area_rel, BoxNoiseParams().meas_area_rel) << "defaults kept";
@@ -124,11 +124,13 @@ TEST(TrackingStage, ASettingWithoutTheOneItActsThroughIsAnErrorNamingBoth) {
   EXPECT_NE(msg.find("identity_check"), std::string::npos) << msg;
   EXPECT_NE(msg.find("test.ini"), std::string::npos) << msg;
   EXPECT_EQ(errorOf("[Tracking]\n" + reid + "identity_check = 0.05\nidentity_repair = 10\n"), "");
-  EXPECT_NE(errorOf("[Tracking]\nidentity_check = 0.05\n").find("reid_max_distance"),
+  const std::string noReid = "reid_max_distance = 0\nreid_memory = 0\n";
+  EXPECT_NE(errorOf("[Tracking]\n" + noReid + "identity_check = 0.05\n").find("reid_max_distance"),
             std::string::npos);
-  EXPECT_NE(errorOf("[Tracking]\nalternative_depth_tracks = true\n").find("alternative_depth"),
+  EXPECT_NE(errorOf("[Tracking]\nalternative_depth = false\nalternative_depth_tracks = true\n")
+                .find("alternative_depth"),
             std::string::npos);
-  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_speed = 1.5\n").find("depth_gate > 0"),
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 0\ndepth_gate_speed = 1.5\n").find("depth_gate > 0"),
             std::string::npos);
 }
 

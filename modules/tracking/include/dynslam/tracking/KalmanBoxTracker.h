@@ -38,25 +38,27 @@
 namespace dynslam::tracking {
 
 /// The tracker's settings. Keys, ranges and meanings: TrackingOptions::describe()
-/// (TrackingStage.cpp) and docs/parameters.md. Why each setting that departs from the method,
-/// with its measured history: docs/notes/perception.md, 2026-11-28.
+/// (TrackingStage.cpp) and docs/parameters.md. The defaults are the shipped, best-measured
+/// configuration (what params/sim_vio.ini runs); params/paper.ini sets the method's values.
+/// Why each setting that departs from the method, with its measured history:
+/// docs/notes/perception.md, 2026-11-28.
 struct KalmanBoxTrackerParams {
-  double rho_min = 0.7;
+  double rho_min = 0.5;
   /// A coasting track's prediction drifts with the time hidden (a walker's gait and turns), so
   /// the paper's threshold rejects the person it hid.
   double rho_min_coasting = 0.7;
   /// 2 s at 30 Hz: a person hidden for 1 s goes without detection for about 1.3 s (partly hidden
   /// before and after), and the prediction must still be there when it comes back.
   int max_age = 60;
-  int min_hits = 3;
+  int min_hits = 2;
   /// A box cut by the image border follows the border, not the object: the method's filter
   /// extrapolates its shrinking and its fixed aspect ratio lags, so the prediction collapses.
   bool reset_at_border = true;
-  double reid_max_distance = 0.0;
+  double reid_max_distance = 0.7;
   double reid_max_shift = 1.5;
   /// People turn while hidden, or leave the image: a returning person's new track is given the
   /// id its colours match once it is confirmed.
-  double reid_memory = 0.0;
+  double reid_memory = 10.0;
   /// A person stepping out from behind another is often given the occluder's depth, and its own
   /// descriptor then shows the occluder.
   double reid_at_track_depth = 0.0;
@@ -67,12 +69,12 @@ struct KalmanBoxTrackerParams {
   /// wall; the track's depth says which is the person. d_alt counts only where the chosen
   /// cluster is another detection's surface or d_alt is the nearer cluster and nobody else's:
   /// otherwise a track once on a wrong surface would keep taking it.
-  bool alternative_depth = false;
+  bool alternative_depth = true;
   /// The occluder's detection was missed: only its track tells that d_t is its surface.
   bool alternative_depth_tracks = false;
   /// A jump of tens of per cent between frames is the segmentation taking an occluder's
   /// surface, and a track that followed it chose that surface again in [Retrack].
-  double depth_gate = 0.0;
+  double depth_gate = 0.15;
   int depth_gate_frames = 5;
   /// A track that coasted while its person walked towards or away from the camera takes the
   /// person's new depth on coming back.
@@ -80,7 +82,7 @@ struct KalmanBoxTrackerParams {
   /// The depth IoU of boxes overlapping by half says nothing of where a track was heading: a
   /// track took a person stepping out beside it against the way it walked. The covariance grows
   /// while a track coasts, so the gate widens with the time hidden.
-  double innovation_gate = 0.0;
+  double innovation_gate = 50.0;
   /// A wrong revival put two identities of one person on two ids, a swap identity_check cannot
   /// see; an identity of a few views is no identity.
   int revival_takes_identity = 0;
