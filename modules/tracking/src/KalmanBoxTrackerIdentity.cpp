@@ -17,11 +17,21 @@ namespace {
 // identity_check).
 constexpr double kConsistentWithIdentity = 0.35;
 
+// The appearance round's reach, in box heights: a person re-found by colour has walked on while
+// hidden, but not across the image. 1 and 2 measured the same as 1.5 (docs/notes/perception.md,
+// 2026-11-28, removed keys).
+constexpr double kReidMaxShift = 1.5;
+
+// A track's running descriptor keeps this weight on the old at each view: it follows the person
+// seen within a few frames (0.6-0.95 measured no better; docs/notes/perception.md, 2026-11-28,
+// removed keys).
+constexpr double kAppearanceMemory = 0.8;
+
 }  // namespace
 
 /// reid_max_distance > 0: the appearance round. A confirmed track still unmatched that was
 /// already coasting takes an unmatched detection of its category whose descriptor is closer
-/// than reid_max_distance, whose centre lies within reid_max_shift box heights of the
+/// than reid_max_distance, whose centre lies within kReidMaxShift box heights of the
 /// prediction and whose depth within a factor 1.5 of the track's; best appearance first. A
 /// track matched on the frame before coasts one frame first: a person of similar colours
 /// stepping out from behind it as the detector missed it would take its id.
@@ -53,7 +63,7 @@ void KalmanBoxTracker::reidentify(const std::vector<BoxObservation>& observation
         const double height = std::max(o.box.height, predicted.height);
         const bool depthAgrees = atDepth || !(depth > 0 && o.depth > 0) ||
                                  std::max(depth, o.depth) < 1.5 * std::min(depth, o.depth);
-        const bool near = std::hypot(shift.x, shift.y) <= params_.reid_max_shift * height;
+        const bool near = std::hypot(shift.x, shift.y) <= kReidMaxShift * height;
         return distance < params_.reid_max_distance && depthAgrees && near ? 1.0 - distance : 0.0;
       },
       a.observationOf, a.observationUsed);
@@ -95,12 +105,12 @@ std::vector<char> KalmanBoxTracker::onOthersSurface(const std::vector<BoxObserva
   return others;
 }
 
-/// `descriptor` (a matched observation's) updates tr's running descriptor (appearance_memory on
+/// `descriptor` (a matched observation's) updates tr's running descriptor (kAppearanceMemory on
 /// the old) and, with identity_check, its identity.
 void KalmanBoxTracker::takeDescriptor(Tracked& tr, const cv::Mat& descriptor) const {
-  tr.appearance = tr.appearance.empty() ? descriptor.clone()
-                                        : params_.appearance_memory * tr.appearance +
-                                              (1 - params_.appearance_memory) * descriptor;
+  tr.appearance = tr.appearance.empty()
+                      ? descriptor.clone()
+                      : kAppearanceMemory * tr.appearance + (1 - kAppearanceMemory) * descriptor;
   tr.described_now = true;
   if (params_.identity_check > 0) updateIdentity(tr, descriptor);
 }
@@ -110,7 +120,7 @@ void KalmanBoxTracker::takeDescriptor(Tracked& tr, const cv::Mat& descriptor) co
 /// inconsistent view otherwise.
 void KalmanBoxTracker::updateIdentity(Tracked& tr, const cv::Mat& descriptor) const {
   // The identity follows slow changes of a person's colours (turning, lighting) over tens of
-  // frames; the running descriptor (appearance_memory 0.8) over a few.
+  // frames; the running descriptor (kAppearanceMemory) over a few.
   constexpr double kIdentityMemory = 0.95;
   if (tr.identity.empty()) {
     tr.identity = descriptor.clone();

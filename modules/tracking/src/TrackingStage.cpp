@@ -13,7 +13,8 @@ void describeAssociation(core::OptionVisitor& v, KalmanBoxTrackerParams& t) {
   v.key("rho_min", t.rho_min, Range::closedOpen(0, 1),
         "accept a track-detection pair only if depth IoU > this");
   v.key("rho_min_coasting", t.rho_min_coasting, Range::closedOpen(0, 1),
-        "2nd round for coasting tracks above this; >= rho_min: none (paper)");
+        "2nd round for coasting tracks above this, below rho_min; the default (>= rho_min): "
+        "none, as the paper");
   v.key("max_age", t.max_age, Range::atLeast(0),
         "detector frames a confirmed track coasts unmatched");
   v.key("min_hits", t.min_hits, Range::atLeast(1), "matched frames that confirm a new track");
@@ -29,9 +30,6 @@ void describeAppearance(core::OptionVisitor& v, KalmanBoxTrackerParams& t) {
   const Range unit = Range::closed(0, 1), off = Range::atLeast(0);
   v.key("reid_max_distance", t.reid_max_distance, unit,
         "> 0: coasting tracks re-found by colour histogram below this (not the method)");
-  v.key("reid_max_shift", t.reid_max_shift, Range::above(0), "box heights; re-finding's reach");
-  v.key("appearance_memory", t.appearance_memory, unit,
-        "weight of a track's colour histogram against a new detection's");
   v.key("reid_memory", t.reid_memory, off,
         "s; with reid: a new track takes a lost or coasting track's id by colour");
   v.key("reid_at_track_depth", t.reid_at_track_depth, unit,
@@ -40,7 +38,7 @@ void describeAppearance(core::OptionVisitor& v, KalmanBoxTrackerParams& t) {
   v.key("descriptor_own_surface", t.descriptor_own_surface,
         "with reid: a track's colours only from detections on their own surface, not another "
         "detection's or recent track's (not the method)");
-  v.key("identity_check", t.identity_check, Range::closed(0, 2),
+  v.key("identity_check", t.identity_check, Range::closedOpen(0, 2),
         "0 = off; with reid: two tracks whose recent colours each match the other's slow "
         "identity descriptor better by more than this swap ids (not the method)");
   v.key("identity_repair", t.identity_repair, off,
@@ -62,7 +60,7 @@ void describeDepth(core::OptionVisitor& v, KalmanBoxTrackerParams& t) {
   v.key("depth_gate", t.depth_gate, Range::closed(0, 1),
         "0 = off; a confirmed track ignores a matched depth this fraction off the last depth it "
         "took (the box still counts; not the method)");
-  v.key("depth_gate_frames", t.depth_gate_frames, Range::atLeast(0),
+  v.key("depth_gate_frames", t.depth_gate_frames, Range::atLeast(1),
         "frames in a row depth_gate may hold a track's depth");
   v.key("depth_gate_speed", t.depth_gate_speed, Range::atLeast(0),
         "m/s, 0 = off; depth_gate also lets through a depth a person walking this fast could "
@@ -85,8 +83,12 @@ void describeNoise(core::OptionVisitor& v, BoxNoiseParams& n) {
   v.key("init_rate_depth", n.init_rate_depth, positive, "m/s; new track's depth rate sigma");
 }
 
-/// Settings that act only through another: set alone, they would silently do nothing.
+/// Settings that act only through another: set alone, they would silently do nothing. A setting
+/// whose off value is not 0 counts as set when it differs from its default.
 void describeRequirements(core::OptionVisitor& v, const KalmanBoxTrackerParams& t) {
+  const KalmanBoxTrackerParams defaults;
+  v.requires("rho_min_coasting", t.rho_min_coasting != defaults.rho_min_coasting,
+             "rho_min > rho_min_coasting", t.rho_min_coasting < t.rho_min);
   const bool reid = t.reid_max_distance > 0;
   v.requires("reid_memory", t.reid_memory > 0, "reid_max_distance > 0", reid);
   v.requires("reid_at_track_depth", t.reid_at_track_depth > 0, "reid_max_distance > 0", reid);
@@ -98,6 +100,8 @@ void describeRequirements(core::OptionVisitor& v, const KalmanBoxTrackerParams& 
              "identity_check > 0 and reid_memory > 0", t.identity_check > 0 && t.reid_memory > 0);
   v.requires("alternative_depth_tracks", t.alternative_depth_tracks, "alternative_depth = true",
              t.alternative_depth);
+  v.requires("depth_gate_frames", t.depth_gate_frames != defaults.depth_gate_frames,
+             "depth_gate > 0", t.depth_gate > 0);
   v.requires("depth_gate_speed", t.depth_gate_speed > 0, "depth_gate > 0", t.depth_gate > 0);
 }
 

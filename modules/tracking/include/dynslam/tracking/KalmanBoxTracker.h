@@ -55,7 +55,6 @@ struct KalmanBoxTrackerParams {
   /// extrapolates its shrinking and its fixed aspect ratio lags, so the prediction collapses.
   bool reset_at_border = true;
   double reid_max_distance = 0.7;
-  double reid_max_shift = 1.5;
   /// People turn while hidden, or leave the image: a returning person's new track is given the
   /// id its colours match once it is confirmed.
   double reid_memory = 10.0;
@@ -92,7 +91,6 @@ struct KalmanBoxTrackerParams {
   /// identity_check's pair test cannot undo a swap into a track whose person has a new track by
   /// now: both identities then describe that person.
   int identity_repair = 0;
-  double appearance_memory = 0.8;
   BoxNoiseParams noise;
 };
 
