@@ -17,8 +17,8 @@
 // read dynslam-sim's; the second renders the images again for the segmentation), detections from
 // GroundTruthDetector, object depth from DepthThresholdSegmenter (or the true depth: the median
 // depth of the person's visible pixels; or the tracker's box-median fallback), then the tracker
-// on the cached observations, once with the ini's settings and once per swept value. Scoring
-// rules (MotMetrics.h for the metrics):
+// on the cached observations, once with the settings given (kBenchStart and --set) and once per
+// swept value. Scoring rules (MotMetrics.h for the metrics):
 // - truth: every object in view; "counted" when at least --min-visible of it is visible (what
 //   the detector reports), else "don't care" (a hidden person cannot be demanded);
 // - hypotheses: confirmed tracks matched this frame or coasting for at most --report-coasting
@@ -299,9 +299,16 @@ void printAppearanceSeparation(const CachedRun& run) {
       100.0 * nearestOwn / described);
 }
 
+/// The tracker the bench starts from, before --set: the method's association (method.md section
+/// 2: rho_min 0.7, min_hits 3, no appearance, no gates) with reset_at_border, the tracker's
+/// defaults every bench-tracking figure up to 2026-11-28 was measured from. The shipped
+/// departures (the defaults now) come with --set, as docs/benchmarks.md's command gives them.
+constexpr const char* kBenchStart =
+    "[Tracking]\nrho_min = 0.7\nmin_hits = 3\nreid_max_distance = 0\nreid_memory = 0\n"
+    "alternative_depth = false\ndepth_gate = 0\ninnovation_gate = 0\nreset_at_border = true\n";
+
 tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& overrides) {
-  std::string text = "[Tracking]\n";
-  auto ini = core::IniConfig::fromText(text, "bench-tracking --set");
+  auto ini = core::IniConfig::fromText(kBenchStart, "bench-tracking --set");
   for (const auto& o : overrides) ini.applyOverride(o);
   tracking::TrackingStage stage;  // validates the keys and values as the pipeline would
   stage.configure(ini, "Tracking");
@@ -340,30 +347,9 @@ tracking::KalmanBoxTrackerParams sweptParams(const BenchSettings& s, const std::
   return trackerParams(overrides);
 }
 
-void benchSimulation(const BenchSettings& s) {
-  const tracking::KalmanBoxTrackerParams params = trackerParams(s.tracker_overrides);
-  const auto start = std::chrono::steady_clock::now();
-  const CachedRun run = prepareSimulatedRun(s);
-  const double prepSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const TrackerRun main = runTracker(run, params, s.report_coasting, s.trace_first, s.trace_last);
-  const auto& m = main.mot;
-  const std::vector<double> depthError = depthErrors(run);
-
-  std::printf("scenario        %s, %zu frames %dx%d, %zu people\n", s.config.c_str(),
-              run.frames.size(), run.image.width, run.image.height, run.people);
-  std::printf(
-      "detections      GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported "
-      "when >= %.2f visible; depth: %s (median error %.1f %%, %.1f %% of detections off by "
-      "more than 15 %%)\n",
-      s.miss_rate, s.jitter, s.min_visible, depthSource(s).c_str(),
-      100 * percentile(depthError, 0.5),
-      100.0 *
-          double(std::count_if(depthError.begin(), depthError.end(),
-                               [](double e) { return e > 0.15; })) /
-          double(std::max<size_t>(1, depthError.size())));
-  // Gaps: stretches of frames in which a truth id seen before and after is not counted
-  // (hidden behind someone, or out of view): each one the tracker has to bridge.
+/// Gaps: stretches of frames in which a truth id seen before and after is not counted (hidden
+/// behind someone, or out of view): each one the tracker has to bridge.
+void printTruthGaps(const CachedRun& run) {
   std::map<int, int> lastSeen;
   std::vector<double> gaps;
   size_t outOfView = 0;
@@ -388,6 +374,26 @@ void benchSimulation(const BenchSettings& s) {
       "truth gaps      %zu stretches in which a person is not counted between two counted "
       "frames (%zu of them out of view): median %.0f frames, p90 %.0f, max %.0f\n",
       gaps.size(), outOfView, percentile(gaps, 0.5), percentile(gaps, 0.9), percentile(gaps, 1.0));
+}
+
+/// The input's lines: scenario, detections and their depth, the gaps in the truth a tracker has
+/// to bridge, and how far the truth moves between frames against rho_min.
+void printInput(const BenchSettings& s, const CachedRun& run,
+                const tracking::KalmanBoxTrackerParams& params) {
+  const std::vector<double> depthError = depthErrors(run);
+  std::printf("scenario        %s, %zu frames %dx%d, %zu people\n", s.config.c_str(),
+              run.frames.size(), run.image.width, run.image.height, run.people);
+  std::printf(
+      "detections      GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported "
+      "when >= %.2f visible; depth: %s (median error %.1f %%, %.1f %% of detections off by "
+      "more than 15 %%)\n",
+      s.miss_rate, s.jitter, s.min_visible, depthSource(s).c_str(),
+      100 * percentile(depthError, 0.5),
+      100.0 *
+          double(std::count_if(depthError.begin(), depthError.end(),
+                               [](double e) { return e > 0.15; })) /
+          double(std::max<size_t>(1, depthError.size())));
+  printTruthGaps(run);
   const double below = double(std::count_if(run.selfRho.begin(), run.selfRho.end(),
                                             [&](double r) { return r <= params.rho_min; }));
   std::printf(
@@ -395,6 +401,12 @@ void benchSimulation(const BenchSettings& s) {
       "frame before: median %.3f, p10 %.3f, p1 %.3f; %.1f %% <= rho_min\n",
       percentile(run.selfRho, 0.5), percentile(run.selfRho, 0.1), percentile(run.selfRho, 0.01),
       100 * below / std::max<size_t>(1, run.selfRho.size()));
+}
+
+/// The tracker's settings and scores on the run, and its time per frame.
+void printScores(const BenchSettings& s, const tracking::KalmanBoxTrackerParams& params,
+                 const TrackerRun& main, double prepSeconds) {
+  const auto& m = main.mot;
   std::printf(
       "tracker         rho_min %.2f (coasting tracks: %.2f), max_age %d, min_hits %d, "
       "innovation_gate %.1f, depth_gate %.2f; reported: confirmed tracks coasting <= %d frames\n",
@@ -414,15 +426,20 @@ void benchSimulation(const BenchSettings& s) {
       "(target <= 0.2 ms; ratio %.3f)\n",
       med, percentile(main.ms, 0.9), main.objects_per_frame, med / 0.2);
   std::printf("(render, detect and segment: %.1f s)\n", prepSeconds);
-  printAppearanceSeparation(run);
-  if (s.identities) {
-    printIdentities(main.frames);
-    std::printf("\nswitches by round (a track taking another person than it took last):\n");
-    for (const auto& [match, counts] : main.takenBy)
-      std::printf("  %-13s %6d observations taken, %4d switches\n", matchName(match), counts.first,
-                  counts.second);
-    for (const auto& e : main.switchEvents) std::printf("  %s\n", e.c_str());
-  }
+}
+
+/// --identities: the tracks that covered each person, and the switches by round.
+void printIdentityReport(const TrackerRun& main) {
+  printIdentities(main.frames);
+  std::printf("\nswitches by round (a track taking another person than it took last):\n");
+  for (const auto& [match, counts] : main.takenBy)
+    std::printf("  %-13s %6d observations taken, %4d switches\n", matchName(match), counts.first,
+                counts.second);
+  for (const auto& e : main.switchEvents) std::printf("  %s\n", e.c_str());
+}
+
+/// --sweep: each swept value's scores on the same run.
+void printSweep(const BenchSettings& s, const CachedRun& run) {
   const std::vector<SweptValue> swept = sweepValues(s);
   if (swept.empty()) return;
   std::printf("\nsweep (one key at a time, everything else as above)\n");
@@ -433,6 +450,20 @@ void benchSimulation(const BenchSettings& s) {
                 r.mot.mota, r.mot.idf1, r.mot.id_switches, r.mot.fragmentations,
                 r.mot.false_positives, r.mot.misses, r.tracks_started);
   }
+}
+
+void benchSimulation(const BenchSettings& s) {
+  const tracking::KalmanBoxTrackerParams params = trackerParams(s.tracker_overrides);
+  const auto start = std::chrono::steady_clock::now();
+  const CachedRun run = prepareSimulatedRun(s);
+  const double prepSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const TrackerRun main = runTracker(run, params, s.report_coasting, s.trace_first, s.trace_last);
+  printInput(s, run, params);
+  printScores(s, params, main, prepSeconds);
+  printAppearanceSeparation(run);
+  if (s.identities) printIdentityReport(main);
+  printSweep(s, run);
 }
 
 /// --scenarios / --seeds: the settings given and each sweep value over every run of the set.
@@ -452,6 +483,69 @@ void benchSimulationSet(const BenchSettings& s, const std::vector<int>& scenario
     }
     return scores;
   });
+}
+
+/// The single run's and the run set's settings from the command line.
+BenchSettings parseSettings(const core::CommandLine& cl) {
+  BenchSettings s;
+  s.config = cl.valueOr("--config", s.config);
+  s.frames = size_t(cl.optionalInteger("--frames").value_or(0));
+  s.miss_rate = cl.optionalDouble("--miss-rate").value_or(s.miss_rate);
+  s.jitter = cl.optionalDouble("--jitter").value_or(s.jitter);
+  s.min_visible = cl.optionalDouble("--min-visible").value_or(s.min_visible);
+  s.seed = uint32_t(cl.optionalInteger("--seed").value_or(s.seed));
+  s.depth = cl.valueOr("--depth", s.depth);
+  if (s.depth != "segmentation" && s.depth != "truth" && s.depth != "box")
+    throw core::UsageError("--depth must be segmentation, truth or box, not '" + s.depth + "'");
+  s.true_depth_below = cl.optionalDouble("--true-depth-below").value_or(0.0);
+  if (s.true_depth_below < 0 || s.true_depth_below > 1 ||
+      (s.true_depth_below > 0 && s.depth != "segmentation"))
+    throw core::UsageError(
+        "--true-depth-below must lie in [0, 1] and goes with --depth segmentation");
+  s.report_coasting = int(cl.optionalInteger("--report-coasting").value_or(s.report_coasting));
+  s.sweep = cl.valueOr("--sweep", s.sweep);
+  s.identities = cl.has("--identities");
+  if (cl.has("--trace")) {
+    const std::string range = cl.required("--trace");
+    if (std::sscanf(range.c_str(), "%d-%d", &s.trace_first, &s.trace_last) != 2 ||
+        s.trace_first < 0 || s.trace_last < s.trace_first)
+      throw core::UsageError("--trace must read FIRST-LAST (frame numbers), not '" + range + "'");
+  }
+  for (const auto& o : cl.all("--set"))
+    (o.rfind("Tracking.", 0) == 0       ? s.tracker_overrides
+     : o.rfind("Segmentation.", 0) == 0 ? s.segmentation_overrides
+                                        : s.sim_overrides)
+        .push_back(o);
+  return s;
+}
+
+/// --video: the tracker with the --set settings on a real video.
+void runVideo(const core::CommandLine& cl, const BenchSettings& s) {
+  VideoBenchSettings v;
+  v.video = cl.required("--video");
+  v.model = cl.required("--model");
+  v.strip = cl.required("--strip");
+  v.frames = size_t(cl.optionalInteger("--video-frames").value_or(0));
+  v.tracker = trackerParams(s.tracker_overrides);
+  benchVideo(v);
+}
+
+/// --scenarios / --seeds: a set of runs.
+void runSet(const core::CommandLine& cl, const BenchSettings& s) {
+  if (cl.has("--seed") || cl.has("--trace") || s.identities)
+    throw core::UsageError(
+        "--scenarios / --seeds run a set: give --seeds instead of --seed, and --trace or "
+        "--identities to single runs only");
+  const std::vector<int> scenarios =
+      cl.has("--scenarios") ? bench::parseRange("--scenarios", cl.required("--scenarios"))
+                            : std::vector<int>{1};
+  const std::vector<int> seeds = cl.has("--seeds")
+                                     ? bench::parseRange("--seeds", cl.required("--seeds"))
+                                     : std::vector<int>{int(s.seed)};
+  const long long hardware = std::max(1u, std::thread::hardware_concurrency());
+  const long long jobs = cl.optionalInteger("--jobs").value_or(hardware);
+  if (jobs < 1) throw core::UsageError("--jobs must be at least 1");
+  benchSimulationSet(s, scenarios, seeds, int(jobs));
 }
 
 }  // namespace
@@ -474,63 +568,13 @@ int main(int argc, char** argv) {
                    "[--video FILE --model ONNX --strip PNG [--video-frames N]]\n";
       return 0;
     }
-    BenchSettings s;
-    s.config = cl.valueOr("--config", s.config);
-    s.frames = size_t(cl.optionalInteger("--frames").value_or(0));
-    s.miss_rate = cl.optionalDouble("--miss-rate").value_or(s.miss_rate);
-    s.jitter = cl.optionalDouble("--jitter").value_or(s.jitter);
-    s.min_visible = cl.optionalDouble("--min-visible").value_or(s.min_visible);
-    s.seed = uint32_t(cl.optionalInteger("--seed").value_or(s.seed));
-    s.depth = cl.valueOr("--depth", s.depth);
-    if (s.depth != "segmentation" && s.depth != "truth" && s.depth != "box")
-      throw core::UsageError("--depth must be segmentation, truth or box, not '" + s.depth + "'");
-    s.true_depth_below = cl.optionalDouble("--true-depth-below").value_or(0.0);
-    if (s.true_depth_below < 0 || s.true_depth_below > 1 ||
-        (s.true_depth_below > 0 && s.depth != "segmentation"))
-      throw core::UsageError(
-          "--true-depth-below must lie in [0, 1] and goes with --depth segmentation");
-    s.report_coasting = int(cl.optionalInteger("--report-coasting").value_or(s.report_coasting));
-    s.sweep = cl.valueOr("--sweep", s.sweep);
-    s.identities = cl.has("--identities");
-    if (cl.has("--trace")) {
-      const std::string range = cl.required("--trace");
-      if (std::sscanf(range.c_str(), "%d-%d", &s.trace_first, &s.trace_last) != 2 ||
-          s.trace_first < 0 || s.trace_last < s.trace_first)
-        throw core::UsageError("--trace must read FIRST-LAST (frame numbers), not '" + range + "'");
-    }
-    for (const auto& o : cl.all("--set"))
-      (o.rfind("Tracking.", 0) == 0       ? s.tracker_overrides
-       : o.rfind("Segmentation.", 0) == 0 ? s.segmentation_overrides
-                                          : s.sim_overrides)
-          .push_back(o);
-    if (cl.has("--video")) {
-      VideoBenchSettings v;
-      v.video = cl.required("--video");
-      v.model = cl.required("--model");
-      v.strip = cl.required("--strip");
-      v.frames = size_t(cl.optionalInteger("--video-frames").value_or(0));
-      v.tracker = trackerParams(s.tracker_overrides);
-      benchVideo(v);
-      return 0;
-    }
-    if (cl.has("--scenarios") || cl.has("--seeds")) {
-      if (cl.has("--seed") || cl.has("--trace") || s.identities)
-        throw core::UsageError(
-            "--scenarios / --seeds run a set: give --seeds instead of --seed, and --trace or "
-            "--identities to single runs only");
-      const std::vector<int> scenarios =
-          cl.has("--scenarios") ? bench::parseRange("--scenarios", cl.required("--scenarios"))
-                                : std::vector<int>{1};
-      const std::vector<int> seeds = cl.has("--seeds")
-                                         ? bench::parseRange("--seeds", cl.required("--seeds"))
-                                         : std::vector<int>{int(s.seed)};
-      const long long hardware = std::max(1u, std::thread::hardware_concurrency());
-      const long long jobs = cl.optionalInteger("--jobs").value_or(hardware);
-      if (jobs < 1) throw core::UsageError("--jobs must be at least 1");
-      benchSimulationSet(s, scenarios, seeds, int(jobs));
-      return 0;
-    }
-    benchSimulation(s);
+    const BenchSettings s = parseSettings(cl);
+    if (cl.has("--video"))
+      runVideo(cl, s);
+    else if (cl.has("--scenarios") || cl.has("--seeds"))
+      runSet(cl, s);
+    else
+      benchSimulation(s);
     return 0;
   });
 }

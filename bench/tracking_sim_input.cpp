@@ -52,6 +52,101 @@ std::string writeObjects(const sim::Simulator& simulator, size_t frames, const s
   return path;
 }
 
+/// A folder of its own for each call: --jobs prepares several runs at once in one process.
+std::string runFolder() {
+  static std::atomic<int> calls{0};
+  return (std::filesystem::temp_directory_path() /
+          ("bench-tracking-" + std::to_string(getpid()) + "-" + std::to_string(calls++)))
+      .string();
+}
+
+/// The segmentation exactly as the pipeline's Segmentation stage reads it from --set.
+segmentation::DepthThresholdParams segmentationParams(const BenchSettings& s) {
+  auto segIni = core::IniConfig::fromText("", "bench-tracking --set");
+  for (const auto& o : s.segmentation_overrides) segIni.applyOverride(o);
+  segmentation::SegmentationStage segStage;
+  segStage.configure(segIni, "Segmentation");
+  return segStage.options().params;
+}
+
+/// Appends to `selfRho` the depth IoU of each object counted on frame `sf` with its own box and
+/// depth on the frame before (`previous`: truth id -> box, depth; then replaced by this frame's).
+void noteSelfRho(const sim::SimFrame& sf, double minVisible,
+                 std::map<int, std::pair<cv::Rect2f, double>>& previous,
+                 std::vector<double>& selfRho) {
+  std::map<int, std::pair<cv::Rect2f, double>> current;
+  for (const auto& o : sf.objects) {
+    if (o.visible_pixels == 0 || o.visible_fraction < minVisible) continue;
+    current[o.id] = {cv::Rect2f(o.box), trueDepth(sf, o)};
+    const auto it = previous.find(o.id);
+    if (it != previous.end())
+      selfRho.push_back(tracking::depthIoU(it->second.first, it->second.second, current[o.id].first,
+                                           current[o.id].second));
+  }
+  previous = std::move(current);
+}
+
+/// frame.object_masks as --depth asks: the segmentation's, one with the true depth per
+/// detection, or none ("box": the tracker's fallback).
+void addObjectMasks(core::Frame& frame, const sim::SimFrame& sf, const BenchSettings& s,
+                    const segmentation::DepthThresholdSegmenter& segmenter) {
+  if (s.depth == "segmentation") {
+    frame.object_masks = segmenter.segment(frame.depth, frame.detections, {}, frame.intrinsics.fy);
+  } else if (s.depth == "truth") {
+    for (size_t k = 0; k < frame.detections.size(); ++k)
+      for (const auto& o : sf.objects)
+        if (o.id == frame.detections[k].truth_id) {
+          core::ObjectMask m;
+          m.detection = int(k);
+          m.valid = true;
+          m.d_t = trueDepth(sf, o);
+          frame.object_masks.push_back(m);
+        }
+  }
+}
+
+/// The observations of `frame`'s detections and the truth behind each (--true-depth-below gives
+/// the partly hidden ones their true depth and the descriptor at it).
+void addObservations(CachedFrame& c, const core::Frame& frame, const sim::SimFrame& sf,
+                     const BenchSettings& s) {
+  for (size_t k = 0; k < frame.detections.size(); ++k) {
+    const auto& d = frame.detections[k];
+    c.observations.push_back(tracking::observeDetection(frame, k, /*withAppearance=*/true));
+    bench::ObservationTruth truth;
+    if (d.truth_id > 0) truth.id = int(d.truth_id);
+    for (const auto& o : sf.objects)
+      if (o.id == d.truth_id) {
+        truth.depth = trueDepth(sf, o);
+        truth.visible = o.visible_fraction;
+      }
+    if (truth.depth > 0 && truth.visible < s.true_depth_below) {
+      tracking::BoxObservation& partlyHidden = c.observations.back();
+      partlyHidden.depth = truth.depth;
+      partlyHidden.depth_alt = 0;
+      partlyHidden.appearance = tracking::bodyHistogram(frame.rgb, d.box, frame.depth, truth.depth);
+    }
+    c.observation_truth.push_back(truth);
+  }
+}
+
+/// appearance_at for the observations given another's surface: the tracker reads it
+/// (reid_at_track_depth) of these only; each keeps a copy of its box's pixels, not the frame,
+/// so that the cache of 900 frames stays small.
+void addAppearanceAt(CachedFrame& c, const core::Frame& frame) {
+  for (size_t k = 0; k < c.observations.size(); ++k)
+    if (tracking::givenAnothersSurface(c.observations, k)) {
+      const cv::Rect2f& b = frame.detections[k].box;
+      const cv::Rect roi =
+          cv::Rect(cvFloor(b.x) - 1, cvFloor(b.y) - 1, cvCeil(b.width) + 3, cvCeil(b.height) + 3) &
+          cv::Rect(0, 0, frame.rgb.cols, frame.rgb.rows);
+      const cv::Rect2f box = b - cv::Point2f(float(roi.x), float(roi.y));
+      c.observations[k].appearance_at = [rgb = frame.rgb(roi).clone(),
+                                         depth = frame.depth(roi).clone(), box](double d) {
+        return tracking::bodyHistogram(rgb, box, depth, d);
+      };
+    }
+}
+
 }  // namespace
 
 CachedRun prepareSimulatedRun(const BenchSettings& s) {
@@ -60,12 +155,7 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
   const sim::Simulator simulator(options);
   const size_t frames =
       s.frames ? std::min(s.frames, simulator.frameCount()) : simulator.frameCount();
-  // One folder per call: --jobs prepares several runs at once in one process.
-  static std::atomic<int> calls{0};
-  const std::string dir =
-      (std::filesystem::temp_directory_path() /
-       ("bench-tracking-" + std::to_string(getpid()) + "-" + std::to_string(calls++)))
-          .string();
+  const std::string dir = runFolder();
   detection::GroundTruthDetectorSettings gt;
   gt.objects = writeObjects(simulator, frames, dir);
   gt.miss_rate = s.miss_rate;
@@ -73,12 +163,7 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
   gt.min_visible_fraction = s.min_visible;
   gt.seed = s.seed;
   detection::GroundTruthDetector detector(gt, detection::ClassMap());
-  // The segmentation exactly as the pipeline's Segmentation stage reads it from --set.
-  auto segIni = core::IniConfig::fromText("", "bench-tracking --set");
-  for (const auto& o : s.segmentation_overrides) segIni.applyOverride(o);
-  segmentation::SegmentationStage segStage;
-  segStage.configure(segIni, "Segmentation");
-  const segmentation::DepthThresholdSegmenter segmenter(segStage.options().params);
+  const segmentation::DepthThresholdSegmenter segmenter(segmentationParams(s));
 
   CachedRun run;
   run.image = cv::Size(options.world.width, options.world.height);
@@ -87,16 +172,7 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
   std::map<int, std::pair<cv::Rect2f, double>> previous;  // truth id -> box, depth
   for (size_t i = 0; i < frames; ++i) {
     simulator.renderFrame(i, sf);
-    std::map<int, std::pair<cv::Rect2f, double>> current;
-    for (const auto& o : sf.objects) {
-      if (o.visible_pixels == 0 || o.visible_fraction < s.min_visible) continue;
-      current[o.id] = {cv::Rect2f(o.box), trueDepth(sf, o)};
-      const auto it = previous.find(o.id);
-      if (it != previous.end())
-        run.selfRho.push_back(tracking::depthIoU(it->second.first, it->second.second,
-                                                 current[o.id].first, current[o.id].second));
-    }
-    previous = std::move(current);
+    noteSelfRho(sf, s.min_visible, previous, run.selfRho);
     core::Frame frame;
     frame.index = i;
     frame.t = sf.t;
@@ -104,55 +180,11 @@ CachedRun prepareSimulatedRun(const BenchSettings& s) {
     frame.depth = sf.image.depth;
     frame.intrinsics = simulator.camera();
     frame.detections = detector.detect(frame);
-    if (s.depth == "segmentation") {
-      frame.object_masks =
-          segmenter.segment(frame.depth, frame.detections, {}, frame.intrinsics.fy);
-    } else if (s.depth == "truth") {
-      for (size_t k = 0; k < frame.detections.size(); ++k)
-        for (const auto& o : sf.objects)
-          if (o.id == frame.detections[k].truth_id) {
-            core::ObjectMask m;
-            m.detection = int(k);
-            m.valid = true;
-            m.d_t = trueDepth(sf, o);
-            frame.object_masks.push_back(m);
-          }
-    }  // "box": no masks, the tracker's fallback
+    addObjectMasks(frame, sf, s, segmenter);
     CachedFrame c;
     c.t = frame.t;
-    for (size_t k = 0; k < frame.detections.size(); ++k) {
-      const auto& d = frame.detections[k];
-      c.observations.push_back(tracking::observeDetection(frame, k, /*withAppearance=*/true));
-      bench::ObservationTruth truth;
-      if (d.truth_id > 0) truth.id = int(d.truth_id);
-      for (const auto& o : sf.objects)
-        if (o.id == d.truth_id) {
-          truth.depth = trueDepth(sf, o);
-          truth.visible = o.visible_fraction;
-        }
-      if (truth.depth > 0 && truth.visible < s.true_depth_below) {
-        tracking::BoxObservation& partlyHidden = c.observations.back();
-        partlyHidden.depth = truth.depth;
-        partlyHidden.depth_alt = 0;
-        partlyHidden.appearance =
-            tracking::bodyHistogram(frame.rgb, d.box, frame.depth, truth.depth);
-      }
-      c.observation_truth.push_back(truth);
-    }
-    // The tracker reads appearance_at (reid_at_track_depth) of these only; each keeps a copy of
-    // its box's pixels, not the frame, so that the cache of 900 frames stays small.
-    for (size_t k = 0; k < c.observations.size(); ++k)
-      if (tracking::givenAnothersSurface(c.observations, k)) {
-        const cv::Rect2f& b = frame.detections[k].box;
-        const cv::Rect roi = cv::Rect(cvFloor(b.x) - 1, cvFloor(b.y) - 1, cvCeil(b.width) + 3,
-                                      cvCeil(b.height) + 3) &
-                             cv::Rect(0, 0, frame.rgb.cols, frame.rgb.rows);
-        const cv::Rect2f box = b - cv::Point2f(float(roi.x), float(roi.y));
-        c.observations[k].appearance_at = [rgb = frame.rgb(roi).clone(),
-                                           depth = frame.depth(roi).clone(), box](double d) {
-          return tracking::bodyHistogram(rgb, box, depth, d);
-        };
-      }
+    addObservations(c, frame, sf, s);
+    addAppearanceAt(c, frame);
     for (const auto& o : sf.objects)
       c.truth.push_back({int(o.id), cv::Rect2d(o.box),
                          o.visible_pixels > 0 && o.visible_fraction >= s.min_visible});

@@ -11,9 +11,8 @@ namespace dynslam::tracking {
 namespace {
 
 /// Every kStride-th pixel of every kStride-th row counts: a person's box holds tens of thousands
-/// of pixels, far more than 68 bins need, and the tracker runs every frame (indoor_people_high:
-/// Tracking stage with re-identification 0.85 -> 0.19 ms per frame at a stride of 3, true-depth
-/// IDF1 unchanged, 0.535 -> 0.494 with the segmentation's depth at seed 1).
+/// of pixels, far more than 68 bins need, and the tracker runs every frame (time and IDF1 at
+/// this stride: docs/notes/perception.md, 2026-11-28, appearance).
 constexpr int kStride = 3;
 
 /// Adds the hue-saturation histogram of the pixels of `region` in `bgr` whose depth is within

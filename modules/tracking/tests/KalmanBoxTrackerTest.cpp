@@ -11,7 +11,7 @@ using namespace dynslam::tracking;
 using namespace dynslam::tracking::testing;
 
 TEST(TrackingKalmanBoxTracker, TentativeThenConfirmedAfterMinHits) {
-  KalmanBoxTracker tracker;  // min_hits = 3
+  KalmanBoxTracker tracker(paperParams());  // min_hits = 3
   for (int k = 0; k < 3; ++k) {
     const auto tracks = step(tracker, k, {person(100 + 2 * k, 100, 60, 180, 3.0)});
     ASSERT_EQ(tracks.size(), 1u);
@@ -23,7 +23,7 @@ TEST(TrackingKalmanBoxTracker, TentativeThenConfirmedAfterMinHits) {
 }
 
 TEST(TrackingKalmanBoxTracker, TentativeTrackMissingAFrameIsDropped) {
-  KalmanBoxTracker tracker;
+  KalmanBoxTracker tracker(paperParams());
   step(tracker, 0, {person(100, 100, 60, 180, 3.0)});
   EXPECT_TRUE(step(tracker, 1, {}).empty());
   EXPECT_EQ(tracker.tracksLost(), 1);
@@ -32,7 +32,7 @@ TEST(TrackingKalmanBoxTracker, TentativeTrackMissingAFrameIsDropped) {
 TEST(TrackingKalmanBoxTracker, CrossingPeopleAtDifferentDepthsKeepTheirIds) {
   // A near person (2 m) walks right, a far one (4 m) walks left behind it; their boxes overlap
   // for about a second, both stay detected.
-  KalmanBoxTracker tracker;
+  KalmanBoxTracker tracker(paperParams());
   int nearId = -1, farId = -1;
   for (int k = 0; k < 90; ++k) {
     const auto tracks = step(tracker, k,
@@ -52,7 +52,7 @@ TEST(TrackingKalmanBoxTracker, CrossingPeopleAtDifferentDepthsKeepTheirIds) {
 }
 
 TEST(TrackingKalmanBoxTracker, CoastsThroughAGapAndKeepsItsId) {
-  KalmanBoxTracker tracker;                                                         // max_age = 30
+  KalmanBoxTracker tracker(paperParams());                                          // max_age = 60
   const auto at = [](int k) { return person(100 + 2.0f * k, 120, 60, 180, 3.0); };  // 60 px/s
   for (int k = 0; k < 30; ++k) step(tracker, k, {at(k)});
   for (int k = 30; k < 50; ++k) {  // hidden for 20 frames
@@ -70,7 +70,7 @@ TEST(TrackingKalmanBoxTracker, CoastsThroughAGapAndKeepsItsId) {
 }
 
 TEST(TrackingKalmanBoxTracker, LostAfterMaxAgeAndIdsAreNeverReused) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.max_age = 5;
   KalmanBoxTracker tracker(params);
   for (int k = 0; k < 5; ++k) step(tracker, k, {person(100, 100, 60, 180, 3.0)});
@@ -83,7 +83,7 @@ TEST(TrackingKalmanBoxTracker, LostAfterMaxAgeAndIdsAreNeverReused) {
 }
 
 TEST(TrackingKalmanBoxTracker, CategoryMustMatch) {
-  KalmanBoxTracker tracker;
+  KalmanBoxTracker tracker(paperParams());
   for (int k = 0; k < 4; ++k) step(tracker, k, {person(100, 100, 60, 180, 3.0)});
   BoxObservation car = person(100, 100, 60, 180, 3.0);
   car.category = "car";
@@ -102,7 +102,7 @@ TEST(TrackingKalmanBoxTracker, CategoryMustMatch) {
 TEST(TrackingKalmanBoxTracker, DepthDecidesAcceptanceAtRhoMin) {
   // Same box, depth 3 m -> 4 m: rho = 0.75 (accepted at 0.7); -> 4.5 m: rho = 0.667 (not).
   for (const auto& [newDepth, accepted] : {std::pair{4.0, true}, std::pair{4.5, false}}) {
-    KalmanBoxTracker tracker;
+    KalmanBoxTracker tracker(paperParams());
     step(tracker, 0, {person(100, 100, 60, 180, 3.0)});
     const auto tracks = step(tracker, 1, {person(100, 100, 60, 180, newDepth)});
     // Not accepted: the tentative track 1 is dropped on its miss and track 2 starts.
@@ -115,8 +115,9 @@ TEST(TrackingKalmanBoxTracker, DepthDecidesAcceptanceAtRhoMin) {
 namespace {
 /// Tracks confirmed on their first detection, with or without Tracking.alternative_depth (and
 /// alternative_depth_tracks).
-KalmanBoxTracker trackerConfirmingAtOnce(bool alternativeDepth, bool alternativeDepthTracks = false) {
-  KalmanBoxTrackerParams params;
+KalmanBoxTracker trackerConfirmingAtOnce(bool alternativeDepth,
+                                         bool alternativeDepthTracks = false) {
+  KalmanBoxTrackerParams params = paperParams();
   params.min_hits = 1;
   params.alternative_depth = alternativeDepth;
   params.alternative_depth_tracks = alternativeDepthTracks;
@@ -217,7 +218,7 @@ TEST(TrackingKalmanBoxTracker, AGoodPairIsNotLostToTwoWeakOnes) {
   // Stationary tracks A (y 0..100) and B (y -80..20). Detection 1 (y -30..100) has rho 0.77
   // with A and 0.28 with B; detection 2 (y 10..140) has 0.64 with A and 0.05 with B. Maximising
   // the total without gating would pair A-2 and B-1 (0.92 > 0.81) and reject both.
-  KalmanBoxTracker tracker;
+  KalmanBoxTracker tracker(paperParams());
   step(tracker, 0, {person(0, 0, 100, 100, 3.0), person(0, -80, 100, 100, 3.0)});
   const auto tracks =
       step(tracker, 1, {person(0, -30, 100, 130, 3.0), person(0, 10, 100, 130, 3.0)});
@@ -228,7 +229,7 @@ TEST(TrackingKalmanBoxTracker, AGoodPairIsNotLostToTwoWeakOnes) {
 }
 
 TEST(TrackingKalmanBoxTracker, TracksWithoutDepthUseIoUAlone) {
-  KalmanBoxTracker tracker;
+  KalmanBoxTracker tracker(paperParams());
   for (int k = 0; k < 10; ++k) {
     const auto tracks = step(tracker, k, {person(100 + 3 * k, 100, 60, 180, 0.0)});
     ASSERT_EQ(tracks.size(), 1u);
@@ -242,7 +243,7 @@ TEST(TrackingKalmanBoxTracker, TracksWithoutDepthUseIoUAlone) {
 }
 
 TEST(TrackingKalmanBoxTracker, ACoastingTrackLeavingTheImageIsLost) {
-  KalmanBoxTracker tracker;
+  KalmanBoxTracker tracker(paperParams());
   const auto at = [](int k) { return person(500 + 10.0f * k, 100, 60, 180, 3.0); };  // 300 px/s
   for (int k = 0; k < 8; ++k) step(tracker, k, {at(k)});  // right edge at 630 px
   int frames = 0;
@@ -257,7 +258,7 @@ TEST(TrackingKalmanBoxTracker, CoastingTracksGetASecondRoundAtTheirOwnThreshold)
   // 0.6). At the paper's single threshold (0.7) that is a new track; with rho_min_coasting =
   // 0.3 the coasting track takes it. A track that is not coasting gets no second round.
   for (const double coasting : {0.7, 0.3}) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.rho_min_coasting = coasting;
     KalmanBoxTracker tracker(params);
     for (int k = 0; k < 10; ++k) step(tracker, k, {person(100, 100, 60, 180, 3.0)});
@@ -268,7 +269,7 @@ TEST(TrackingKalmanBoxTracker, CoastingTracksGetASecondRoundAtTheirOwnThreshold)
     EXPECT_EQ(first->detection, coasting < 0.7 ? 0 : -1) << coasting;
     EXPECT_EQ(tracks.size(), coasting < 0.7 ? 1u : 2u) << coasting;
   }
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.rho_min_coasting = 0.3;
   KalmanBoxTracker tracker(params);
   for (int k = 0; k < 10; ++k) step(tracker, k, {person(100, 100, 60, 180, 3.0)});
@@ -282,7 +283,7 @@ TEST(TrackingKalmanBoxTracker, CoastingTracksGetASecondRoundAtTheirOwnThreshold)
 // shrinking area and its fixed aspect ratio lags, so its prediction collapses and loses it.
 TEST(TrackingKalmanBoxTracker, APersonCutByTheImageBorderKeepsItsId) {
   auto run = [](bool reset) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reset_at_border = reset;
     KalmanBoxTracker tracker(params);
     std::set<int> ids;
@@ -305,7 +306,7 @@ TEST(TrackingKalmanBoxTracker, DepthGateHoldsAConfirmedTracksDepthForAFewFrames)
   // at rho_min 0.5. With depth_gate 0.15 the track keeps its depth for depth_gate_frames (3)
   // frames and follows the box; then the measurement counts again.
   for (const double gate : {0.0, 0.15}) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.min_hits = 1;
     params.rho_min = 0.5;
     params.depth_gate = gate;
@@ -333,7 +334,7 @@ TEST(TrackingKalmanBoxTracker, DepthGateFollowsAPersonWhoTurnsRound) {
   // with the prediction (which runs on with the old rate and soon differs by more than 15 %),
   // so the track follows every frame (within the filter's own lag at the turn; held against
   // the prediction it fell 18 % behind at frame 16).
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.min_hits = 1;
   params.rho_min = 0.5;
   params.depth_gate = 0.15;
@@ -357,7 +358,7 @@ TEST(TrackingKalmanBoxTracker, DepthGateSpeedLetsAReturningTrackTakeItsPersonsNe
   // in those 11 frames, so the track takes 1.7 m. On consecutive frames the speed allows 5 cm,
   // under the gate's 15 %: a surface flip there is still held.
   for (const double speed : {0.0, 1.5}) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.min_hits = 1;
     params.rho_min = 0.5;
     params.depth_gate = 0.15;
@@ -390,7 +391,7 @@ TEST(TrackingKalmanBoxTracker, InnovationGateKeepsATrackOffAPersonSteppingOutAga
   // filter's position uncertainty, so with the gate the track coasts and the newcomer gets a
   // track of its own.
   for (const double gate : {0.0, 25.0}) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.min_hits = 1;
     params.rho_min = 0.5;
     params.innovation_gate = gate;

@@ -75,7 +75,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGiven
   const cv::Mat green(480, 640, CV_8UC3, cv::Scalar(0, 200, 0));
   const cv::Mat near(480, 640, CV_32FC1, cv::Scalar(1.5f));
   auto run = [&](double atTrackDepth, const cv::Mat& img, const cv::Mat& z) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.reid_at_track_depth = atTrackDepth;
     KalmanBoxTracker tracker(params);
@@ -111,7 +111,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationAtTheTracksDepthFindsAPersonGiven
 // a differently dressed person appearing at the same spot is not taken for it.
 TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPrediction) {
   auto run = [](double reid, int reappearingColour) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = reid;
     KalmanBoxTracker tracker(params);
     int k = 0;
@@ -130,10 +130,10 @@ TEST(TrackingKalmanBoxTracker, ReidentificationByAppearanceBridgesADriftedPredic
 
 // A confirmed track matched on the last frame that loses its detection is not re-found by
 // colour in the same frame: a second person of similar colours stepping out from behind it as
-// the detector misses the first one would take its id (the swap bench-tracking found on
-// indoor_people_high). It coasts instead.
+// the detector misses the first one would take its id (a swap bench-tracking found:
+// docs/notes/perception.md, 2026-11-28, reid_max_distance). It coasts instead.
 TEST(TrackingKalmanBoxTracker, ReidentificationWaitsForATrackToCoast) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.reid_max_distance = 0.4;
   KalmanBoxTracker tracker(params);
   int k = 0;
@@ -150,7 +150,7 @@ TEST(TrackingKalmanBoxTracker, ReidentificationWaitsForATrackToCoast) {
 // confirmed; someone dressed otherwise gets a new one; without memory the id is new.
 TEST(TrackingKalmanBoxTracker, ReidMemoryGivesAReturningPersonItsId) {
   auto run = [](double memory, int returningColour) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.reid_memory = memory;
     KalmanBoxTracker tracker(params);
@@ -175,7 +175,7 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryGivesAReturningPersonItsId) {
 // A track coasting after its person's measured depth jumped (an arm at the image border): the
 // person's new track, once confirmed, takes the coasting track's id, and the coasting one goes.
 TEST(TrackingKalmanBoxTracker, ReidMemoryMergesANewTrackIntoACoastingOne) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.reid_max_distance = 0.4;
   params.reid_memory = 10;
   params.reset_at_border = false;
@@ -194,7 +194,7 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryMergesANewTrackIntoACoastingOne) {
 // A returning person's first detections have no descriptor (no depth in its box yet): its new
 // track is confirmed without one, and takes the lost track's id once a descriptor comes.
 TEST(TrackingKalmanBoxTracker, ReidMemoryWaitsForANewTracksFirstDescriptor) {
-  KalmanBoxTrackerParams params;
+  KalmanBoxTrackerParams params = paperParams();
   params.reid_max_distance = 0.4;
   params.reid_memory = 10;
   KalmanBoxTracker tracker(params);
@@ -222,10 +222,10 @@ TEST(TrackingKalmanBoxTracker, ReidMemoryWaitsForANewTracksFirstDescriptor) {
 // the near person's depth band, shows green. Without descriptor_own_surface the new track is
 // confirmed with it and reid_memory gives it the near person's id, whose next detection then
 // starts a new track; with it the descriptor is not the new track's, and the near person keeps
-// its id (bench-tracking, segmentation depth, seed 2, frames 587-589).
+// its id (as bench-tracking found: docs/notes/perception.md, 2026-11-28, descriptor_own_surface).
 TEST(TrackingKalmanBoxTracker, DescriptorsOnAnotherTracksSurfaceAreNotTaken) {
   auto run = [](bool ownSurface) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.min_hits = 2;
     params.reid_max_distance = 0.4;
     params.reid_memory = 10;
@@ -255,7 +255,7 @@ TEST(TrackingKalmanBoxTracker, DescriptorsOnAnotherTracksSurfaceAreNotTaken) {
 // go back to the people within a few frames.
 TEST(TrackingKalmanBoxTracker, IdentityCheckSwapsIdsBackAfterAnAssociationSwappedThem) {
   auto idOfColour3 = [](double identityCheck) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.identity_check = identityCheck;
     KalmanBoxTracker tracker(params);
@@ -286,7 +286,7 @@ TEST(TrackingKalmanBoxTracker, IdentityCheckSwapsIdsBackAfterAnAssociationSwappe
 // identity its views match. A colour nobody had leaves the id alone.
 TEST(TrackingKalmanBoxTracker, IdentityRepairGivesATrackTheLostIdOfThePersonItFollows) {
   auto idAfter = [](int repair, int newColour) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.4;
     params.reid_memory = 10;
     params.identity_check = 0.1;
@@ -317,9 +317,9 @@ TEST(TrackingKalmanBoxTracker, IdentityRepairGivesATrackTheLostIdOfThePersonItFo
 // id now sits on the other's person. When the revived track takes over id 2's identity
 // descriptor (9 views of B: a new track takes none on its first frame), identity_check sees each
 // track's views match the other's identity and swaps the ids back; when it keeps its own first
-// views as identity, both identities describe A and nothing tells (bench-tracking, true depth,
-// choreography 8 seed 4: 400 frames on the other's id). revival_takes_identity = 30 asks for
-// more views than id 2's identity took.
+// views as identity, both identities describe A and nothing tells (as bench-tracking found:
+// docs/notes/perception.md, 2026-11-28, revival_takes_identity). revival_takes_identity = 30 asks
+// for more views than id 2's identity took.
 TEST(TrackingKalmanBoxTracker, ARevivedIdKeepsItsIdentitySoAWrongRevivalIsSwappedBack) {
   auto dressedAlike = [](BoxObservation o, int bin) {
     o.appearance = cv::Mat::zeros(1, kAppearanceBins, CV_32F);
@@ -328,7 +328,7 @@ TEST(TrackingKalmanBoxTracker, ARevivedIdKeepsItsIdentitySoAWrongRevivalIsSwappe
     return o;
   };
   auto idsOfAAndB = [&](int takesIdentity) {
-    KalmanBoxTrackerParams params;
+    KalmanBoxTrackerParams params = paperParams();
     params.reid_max_distance = 0.75;
     params.reid_memory = 10;
     params.identity_check = 0.1;

@@ -10,6 +10,22 @@ namespace dynslam::tracking::testing {
 
 constexpr double kDt = 1.0 / 30;
 
+/// The tracker as method.md section 2 states it (params/paper.ini's [Tracking]): the defaults
+/// with every departure turned off, for the tests of the method's own behaviour and of one
+/// departure at a time.
+inline KalmanBoxTrackerParams paperParams() {
+  KalmanBoxTrackerParams p;
+  p.rho_min = 0.7;
+  p.min_hits = 3;
+  p.reset_at_border = false;
+  p.reid_max_distance = 0;
+  p.reid_memory = 0;
+  p.alternative_depth = false;
+  p.depth_gate = 0;
+  p.innovation_gate = 0;
+  return p;
+}
+
 inline BoxObservation person(float x, float y, float w, float h, double depth) {
   return {cv::Rect2f(x, y, w, h), depth, "person", core::MotionModel::NonRigid};
 }

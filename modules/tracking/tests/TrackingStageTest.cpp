@@ -50,13 +50,13 @@ TEST(TrackingStage, RegisteredAndConfiguredFromItsSection) {
   auto stage = registry.create("Tracking");
   ASSERT_TRUE(dynamic_cast<TrackingStage*>(stage.get()));
   stage->configure(
-      core::IniConfig::fromText("[Tracking]\nrho_min = 0.5\nmax_age = 12\nmin_hits = 2\n"
+      core::IniConfig::fromText("[Tracking]\nrho_min = 0.6\nmax_age = 12\nmin_hits = 4\n"
                                 "meas_center_px = 4.5\naccel_depth = 0.5\n"),
       "Tracking");
   const auto& o = static_cast<TrackingStage&>(*stage).options().tracker;
-  EXPECT_EQ(o.rho_min, 0.5);
+  EXPECT_EQ(o.rho_min, 0.6);
   EXPECT_EQ(o.max_age, 12);
-  EXPECT_EQ(o.min_hits, 2);
+  EXPECT_EQ(o.min_hits, 4);
   EXPECT_EQ(o.noise.meas_center_px, 4.5);
   EXPECT_EQ(o.noise.accel_depth, 0.5);
   EXPECT_EQ(o.noise.meas_area_rel, BoxNoiseParams().meas_area_rel) << "defaults kept";
@@ -93,7 +93,7 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
                           "identity_repair",
                           "revival_takes_identity"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
-  EXPECT_EQ(keys.size(), 31u);
+  EXPECT_EQ(keys.size(), 29u);
   EXPECT_NE(errorOf("[Tracking]\nrho_mn = 0.5\n").find("rho_mn"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min = 1.5\n").find("rho_min"), std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = -0.1\n").find("rho_min_coasting"),
@@ -106,8 +106,11 @@ TEST(TrackingStage, EveryKeyIsDocumentedAndTyposAreErrors) {
   EXPECT_NE(errorOf("[Tracking]\nidentity_repair = -1\n").find("identity_repair"),
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 1.5\n").find("depth_gate"), std::string::npos);
-  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_frames = -1\n").find("depth_gate_frames"),
-            std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_frames = 0\n").find("depth_gate_frames"),
+            std::string::npos)
+      << "0 frames would hold nothing";
+  EXPECT_NE(errorOf("[Tracking]\nidentity_check = 2\n").find("identity_check"), std::string::npos)
+      << "two distances of at most 1 never differ by 2";
   EXPECT_NE(errorOf("[Tracking]\ndepth_gate_speed = -1\n").find("depth_gate_speed"),
             std::string::npos);
   EXPECT_NE(errorOf("[Tracking]\nreid_at_track_depth = 2\n").find("reid_at_track_depth"),
@@ -124,12 +127,20 @@ TEST(TrackingStage, ASettingWithoutTheOneItActsThroughIsAnErrorNamingBoth) {
   EXPECT_NE(msg.find("identity_check"), std::string::npos) << msg;
   EXPECT_NE(msg.find("test.ini"), std::string::npos) << msg;
   EXPECT_EQ(errorOf("[Tracking]\n" + reid + "identity_check = 0.05\nidentity_repair = 10\n"), "");
-  EXPECT_NE(errorOf("[Tracking]\nidentity_check = 0.05\n").find("reid_max_distance"),
+  const std::string noReid = "reid_max_distance = 0\nreid_memory = 0\n";
+  EXPECT_NE(errorOf("[Tracking]\n" + noReid + "identity_check = 0.05\n").find("reid_max_distance"),
             std::string::npos);
-  EXPECT_NE(errorOf("[Tracking]\nalternative_depth_tracks = true\n").find("alternative_depth"),
+  EXPECT_NE(errorOf("[Tracking]\nalternative_depth = false\nalternative_depth_tracks = true\n")
+                .find("alternative_depth"),
             std::string::npos);
-  EXPECT_NE(errorOf("[Tracking]\ndepth_gate_speed = 1.5\n").find("depth_gate > 0"),
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 0\ndepth_gate_speed = 1.5\n").find("depth_gate > 0"),
             std::string::npos);
+  EXPECT_NE(errorOf("[Tracking]\ndepth_gate = 0\ndepth_gate_frames = 3\n").find("depth_gate > 0"),
+            std::string::npos);
+  // rho_min_coasting acts only below rho_min (a second round at a lower threshold).
+  EXPECT_NE(errorOf("[Tracking]\nrho_min_coasting = 0.6\n").find("rho_min > rho_min_coasting"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("[Tracking]\nrho_min_coasting = 0.3\n"), "");
 }
 
 TEST(TrackingStage, FramesWithoutFreshDetectionsCarryPredictedBoxes) {

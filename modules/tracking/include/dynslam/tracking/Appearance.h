@@ -15,10 +15,8 @@
 // part: hue x saturation, 16 x 4 bins; pixels too dark or too grey for a stable hue (V < 40 or
 // S < 40 of 255) go to 4 extra grey-level bins; L1-normalised to 0.5 per part.
 //
-// Measured on indoor_people_high with true depth (bench-tracking prints it): distance of one
-// person's detections one frame apart median 0.07, p99 0.41, of two people in one frame p10
-// 0.39; the torso alone without the band, its first form: p99 0.36 and p10 0.29, and IDF1 0.58
-// against 0.47 (reid 0.5, everything else equal).
+// How well it separates people (bench-tracking prints it), and the torso-only form it replaced:
+// docs/notes/perception.md, 2026-11-28 (appearance).
 #include <dynslam/core/Frame.h>
 #include <dynslam/tracking/KalmanBoxTracker.h>
 

@@ -5,24 +5,26 @@
 // each (predicted track, detection) pair of the same category is computed; the Hungarian
 // algorithm picks the assignment with the largest total rho, and a pair is accepted only if
 // rho > rho_min. Matched tracks update their filter. Unmatched confirmed tracks coast (predict
-// only, the box keeping its size: the area rate is held at 0 while coasting, as a linear
-// extrapolation of the area over a second of hiding shrinks or blows up the box) for up to
-// max_age detector frames, so an object hidden behind another keeps its ID and is taken up
-// again when it reappears (paper Fig. 10); then they are Lost, as they are once less than half
-// of their predicted box is inside the image. Unmatched detections start Tentative tracks,
-// Confirmed after min_hits matched frames; a Tentative track that misses a frame is dropped (a
-// false positive rarely repeats at the same place and depth). IDs count up from 1 and are never
-// given to another object (reid_memory, below, gives a returning object its own back).
+// only) for up to max_age detector frames, so an object hidden behind another keeps its ID and
+// is taken up again when it reappears (paper Fig. 10); then they are Lost, as they are once less
+// than half of their predicted box is inside the image. Unmatched detections start Tentative
+// tracks, Confirmed after min_hits matched frames. IDs count up from 1 and are never given to
+// another object (reid_memory gives a returning object its own back).
 //
-// Optionally (rho_min_coasting < rho_min, not in the paper), tracks that were already coasting
-// get a second round against the detections left over, accepted above rho_min_coasting: after
-// a second of coasting the predicted box of a walker has drifted by a fraction of its width
-// (gait, turns), and the paper's 0.7 then rejects the person it hid (bench-tracking measures
-// both).
-//
-// Pairs at or below rho_min are removed before the assignment (their gain set to 0) rather than
-// after it: otherwise maximising the total could pick two sub-threshold pairs over one good
-// pair (0.69 + 0.69 > 0.8), and the good pair would be lost.
+// Always, beyond the method's text:
+// - a coasting track's box keeps its size and depth (area and depth rates held at 0): a linear
+//   extrapolation over a second of hiding shrinks or blows up the box, and a shrunk box is
+//   never taken up again;
+// - a Tentative track that misses a frame is dropped (a false positive rarely repeats at the
+//   same place and depth);
+// - pairs at or below the threshold are removed before the assignment (their gain set to 0)
+//   rather than after it: otherwise maximising the total could pick two sub-threshold pairs over
+//   one good pair (0.69 + 0.69 > 0.8), and the good pair would be lost.
+// The settings that depart from the method, each off in params/paper.ini, add rounds after the
+// depth-IoU one (rho_min_coasting, reid_max_distance), ids given back by appearance (reid_memory,
+// identity_check, identity_repair, revival_takes_identity) and gates on what a match may change
+// (innovation_gate, depth_gate, alternative_depth, reset_at_border): docs/design.md lists them
+// with their measured gains.
 #include <dynslam/core/Perception.h>
 #include <dynslam/tracking/BoxNoiseModel.h>
 
@@ -35,164 +37,60 @@
 
 namespace dynslam::tracking {
 
+/// The tracker's settings. Keys, ranges and meanings: TrackingOptions::describe()
+/// (TrackingStage.cpp) and docs/parameters.md. The defaults are the shipped, best-measured
+/// configuration (what params/sim_vio.ini runs); params/paper.ini sets the method's values.
+/// Why each setting that departs from the method, with its measured history:
+/// docs/notes/perception.md, 2026-11-28.
 struct KalmanBoxTrackerParams {
-  double rho_min = 0.7;  ///< accept a (track, detection) pair only if its depth IoU exceeds this
-  /// A second round for tracks that were already coasting, with this (lower) threshold: their
-  /// prediction drifts with the time hidden. >= rho_min: no second round (the paper's rule).
+  double rho_min = 0.5;
+  /// A coasting track's prediction drifts with the time hidden (a walker's gait and turns), so
+  /// the paper's threshold rejects the person it hid.
   double rho_min_coasting = 0.7;
-  /// Detector frames a confirmed track coasts unmatched before it is Lost: 2 s at 30 Hz, as a
-  /// person hidden for 1 s goes without detection for about 1.3 s (partly hidden before and
-  /// after) and the prediction must still be there when it comes back.
+  /// 2 s at 30 Hz: a person hidden for 1 s goes without detection for about 1.3 s (partly hidden
+  /// before and after), and the prediction must still be there when it comes back.
   int max_age = 60;
-  int min_hits = 3;  ///< matched frames (the first included) that confirm a track
-  /// A detection touching the image border is cut by it: its size, aspect ratio and its centre
-  /// along the cut axis follow the border, not the object's motion (a person walking out of
-  /// the image shrinks to a sliver whose centre slows down and stops). The method's filter
-  /// extrapolates those rates and its aspect ratio, held constant, lags: the predicted box
-  /// collapses (e.g. 37 x 160 px against a 49 x 442 px detection) and the person gets a new ID
-  /// every few frames along the border. true: on such a detection the filter restarts area,
-  /// aspect ratio and the cut axis' centre from the measurement, with zero rates (the next
-  /// prediction is the box as seen). bench-tracking, indoor_people_high, true depth, defaults
-  /// otherwise: 132 -> 93 tracks started, MOTA 0.866 -> 0.898. false: the method as printed.
+  int min_hits = 2;
+  /// A box cut by the image border follows the border, not the object: the method's filter
+  /// extrapolates its shrinking and its fixed aspect ratio lags, so the prediction collapses.
   bool reset_at_border = true;
-  /// The appearance cue (Appearance.h; not the method, off by default). > 0: a third round
-  /// after the depth-IoU ones, for the confirmed tracks still unmatched that were already
-  /// coasting: an unmatched detection of the same category is taken when the descriptors
-  /// (Bhattacharyya, 0..1) are closer than this, its centre lies within reid_max_shift box
-  /// heights of the prediction and its depth within a factor 1.5 of the track's. Best
-  /// appearance first (Hungarian). A track matched on the frame before is left to coast one
-  /// frame first: when the detector misses a person just as another of similar colours steps
-  /// out from behind them, taking that one swapped their identities (bench-tracking,
-  /// indoor_people_high: IDF1 0.81 -> 0.88 at 0.7); a track that fails rho_min for good is
-  /// taken up by reid_memory once the person's new track is confirmed.
-  double reid_max_distance = 0.0;
-  double reid_max_shift = 1.5;
-  /// With reid_max_distance > 0, s a lost confirmed track's descriptor is remembered (not the
-  /// method). A new track that becomes confirmed takes the id of the remembered track, or of a
-  /// confirmed track coasting now, whose descriptor is closest to its own if closer than
-  /// reid_max_distance, wherever it is: the person came back after the prediction had drifted
-  /// off (people turn while hidden) or out of the image. 0: no memory.
-  double reid_memory = 0.0;
-  /// Not the method (0 = off): in the appearance round (reid_max_distance) a detection given
-  /// another detection's surface (givenAnothersSurface) is also compared by its colours at the
-  /// coasting track's depth (appearance_at); when those are closer than this, they decide and
-  /// the depth factor is waived. A person stepping out from behind another is often given the
-  /// occluder's depth; its descriptor then shows the occluder and the detection started a new
-  /// identity. bench-tracking with the segmentation's depth, 24 seeds: IDF1 0.710 -> 0.729 at
-  /// 0.5 (true depth unchanged); the whole system's camera APE moved on 6 of 18 runs, 4 worse
-  /// by 9-19 %, 2 better by 4 and 24 % (README "Perception"), so the shipped inis leave it off
-  /// until more runs say which way it goes. Not for reid_memory's revival:
-  /// there a new track's box that hides a coasting person took that person's identity.
+  double reid_max_distance = 0.7;
+  /// People turn while hidden, or leave the image: a returning person's new track is given the
+  /// id its colours match once it is confirmed.
+  double reid_memory = 10.0;
+  /// A person stepping out from behind another is often given the occluder's depth, and its own
+  /// descriptor then shows the occluder.
   double reid_at_track_depth = 0.0;
-  /// Not the method: a matched detection's descriptor updates (or starts) its track's only when
-  /// the detection's depth is its own surface: not another detection's (givenAnothersSurface)
-  /// and not that of another track seen on the last frame or coasting since then, whose
-  /// predicted box covers more than a fifth of the detection's (depths within 15 %). The
-  /// descriptor is taken in the depth band of the detection's depth (Appearance.h); on another's
-  /// surface it shows the other's clothes. When the detector missed a near person just as a
-  /// partly hidden one stepped out beside it with its surface, the new track's first descriptor
-  /// showed the near person and reid_memory's revival gave it the near person's id, whose next
-  /// detection then started a new track (bench-tracking --trace, segmentation depth, seed 2,
-  /// frames 587-589). Tracks coasting longer are left out: their prediction drifts, and the
-  /// person they lost is the likeliest one to be standing there, whose revival the test then
-  /// held up. bench-tracking, 24 seeds: IDF1 0.707 -> 0.802 with the segmentation's depth, 0.899
-  /// -> 0.900 with true depth. On in params/sim_perception*.ini; off in sim_vio.ini, where the
-  /// camera's APE was 9 % worse on the street (7 of 9 seeds) and unchanged indoors (README
-  /// "Perception").
+  /// A descriptor taken on another's surface shows the other's clothes, and the revival then
+  /// gave the new track the other's id.
   bool descriptor_own_surface = false;
-  /// Not the method: a detection whose segmentation had two clusters matches a track by
-  /// whichever of the two depths (d_t, d_alt) gives the larger depth IoU, and updates the
-  /// track's depth with that one. The cluster choice of a partly hidden person flips between
-  /// the person, the occluder and the wall from frame to frame; the track's depth says which
-  /// is the person. A new track starts from d_t. d_alt counts only where the chosen cluster is
-  /// the surface (d_t) of another detection whose box overlaps, or where d_alt is the nearer
-  /// cluster and nobody else's; otherwise a track whose depth once went to the wall or to an
-  /// occluder would keep taking that surface through d_alt.
-  bool alternative_depth = false;
-  /// Not the method (with alternative_depth): d_alt also counts where d_t is the surface of a
-  /// track seen on one of the last two frames whose predicted box overlaps the detection's
-  /// but too little to be its own (box IoU <= rho_min). The occluder's detection was missed:
-  /// the segmentation gave the person behind it the occluder's surface and there is no other
-  /// detection to tell, so its track (depth IoU under rho_min at that depth) lost it and a new
-  /// track started on the occluder's depth (bench-tracking, segmentation depth, choreography
-  /// 13 seed 2, frame 123). bench-tracking, segmentation depth: IDF1 0.7209 -> 0.7300 over
-  /// choreographies 2-13 x detector seeds 1-4 (32 runs better, 14 worse), 0.8429 -> 0.8508 on
-  /// choreography 1 x 24 seeds; ID switches 48.1 -> 43.9 and 38.6 -> 35.4 per run. On in
-  /// params/sim_perception*.ini; off in sim_vio.ini and sim_frontend.ini, where the camera's APE
-  /// was not better (indoor 0.00638 -> 0.00657 m over 18 seeds, street 0.0687 -> 0.0698 m over 9;
-  /// README "Perception").
+  /// A partly hidden person's cluster choice flips between the person, the occluder and the
+  /// wall; the track's depth says which is the person. d_alt counts only where the chosen
+  /// cluster is another detection's surface or d_alt is the nearer cluster and nobody else's:
+  /// otherwise a track once on a wrong surface would keep taking it.
+  bool alternative_depth = true;
+  /// The occluder's detection was missed: only its track tells that d_t is its surface.
   bool alternative_depth_tracks = false;
-  /// Not the method (0 = off): a confirmed track's depth is not updated by a matched depth more
-  /// than this fraction off the last depth it took (the box still is), for up to
-  /// depth_gate_frames frames in a row; then the measurement counts again, so a track that is
-  /// itself on a wrong surface comes back. A person walks a few cm between frames; a jump of tens
-  /// of per cent is the segmentation taking an occluder's surface for a partly hidden person, and a
-  /// track that followed it (the depth IoU still accepts the box) chose that surface again in
-  /// [Retrack] for as long as the occlusion lasted.
-  double depth_gate = 0.0;
+  /// A jump of tens of per cent between frames is the segmentation taking an occluder's
+  /// surface, and a track that followed it chose that surface again in [Retrack].
+  double depth_gate = 0.15;
   int depth_gate_frames = 5;
-  /// Not the method (m/s, 0 = off; with depth_gate): the gate also lets through a depth that a
-  /// person walking at this speed could have reached since the track last took a depth
-  /// (depth_gate_speed x the time since), so a track that coasted while its person walked
-  /// towards or away from the camera takes the person's depth again on coming back. Held
-  /// there, the track's depth stayed where its person was hidden, and the next frame a
-  /// neighbour's track nearer that depth took the person (bench-tracking, true depth,
-  /// choreography 4 seed 2, frame 438). bench-tracking, 1.5: IDF1 with true depth 0.8786 ->
-  /// 0.8937 over choreographies 2-13 x seeds 1-4 (19 better, 6 worse), 0.9286 -> 0.9381 on
-  /// choreography 1 x 24 seeds; with the segmentation's depth 0.7772 -> 0.7726 and 0.8729 ->
-  /// 0.8736 (the gate's surface flips pass too), so no shipped ini sets it (README "Perception").
+  /// A track that coasted while its person walked towards or away from the camera takes the
+  /// person's new depth on coming back.
   double depth_gate_speed = 0.0;
-  /// Not the method (0 = off): a (track, detection) pair is also refused when the squared
-  /// Mahalanobis distance of the detection's box centre from the track's predicted one (the
-  /// filter's position covariance plus meas_center_px^2) exceeds this (chi-square, 2 degrees of
-  /// freedom: 9.2 is the 99 % quantile). The depth IoU of two boxes that overlap by half says
-  /// nothing of where the track was heading: when the person a track follows disappears behind
-  /// another just as a third steps out beside it, the track took the third one (40 px against
-  /// the way it walked, at IoU 0.6) and the two identities swapped for good. The covariance grows
+  /// The depth IoU of boxes overlapping by half says nothing of where a track was heading: a
+  /// track took a person stepping out beside it against the way it walked. The covariance grows
   /// while a track coasts, so the gate widens with the time hidden.
-  double innovation_gate = 0.0;
-  /// Not the method (0 = off; needs identity_check and reid_memory): an id whose identity
-  /// descriptor was built from at least this many views is that identity in the revival. A new
-  /// track is compared with it (not with the old track's running descriptor, which follows
-  /// whoever that track took last), and a revived track takes it with the id, as a swap and a
-  /// repair already move the identity with the id; ids with younger identities are compared and
-  /// revived as before, and the new track keeps its own first views as identity. A wrong revival
-  /// (a track that took another person hid its own person's id: that person's new track got the
-  /// other's coasting or lost id) put two identities of one person on two ids, and
-  /// identity_check, which reads each id's identity, could not see the swap (bench-tracking, true
-  /// depth, choreography 8 seed 4: two people on each other's ids for 400 frames; with this,
-  /// swapped back at once). An identity of a few views is no identity: taking any (1) undid early
-  /// mix-ups that the ids had kept consistently in mid-run, which IDF1 counts against.
-  /// bench-tracking, choreographies 2-13 x detector seeds 1-4, at 10: IDF1 with the
-  /// segmentation's depth 0.7300 -> 0.7772, with true depth 0.8421 -> 0.8786 (README
-  /// "Perception"). On in params/sim_perception*.ini, where identity_check is; the whole-system
-  /// inis have identity_check off.
+  double innovation_gate = 50.0;
+  /// A wrong revival put two identities of one person on two ids, a swap identity_check cannot
+  /// see; an identity of a few views is no identity.
   int revival_takes_identity = 0;
-  /// Not the method (0 = off): each confirmed track also keeps a slow "identity" descriptor,
-  /// updated (weight 0.95 on the old) only by views within distance 0.35 of it. When two
-  /// confirmed tracks both take a descriptor on one frame and each one's running descriptor is
-  /// nearer the other's identity, summed over the two, by more than this, their ids (and
-  /// identities) are swapped: the association gave each the other's person at a crossing, and
-  /// the ids go back to the people. The identity is not updated by the other person's views (too
-  /// far from it), so the running descriptor, which follows the person seen within a few
-  /// frames, shows the swap. Without it a swap lasted until the next crossing: one on
-  /// bench-tracking's seed 6 (segmentation depth) held two people on each other's tracks for
-  /// 370 frames. bench-tracking, 24 seeds, 0.1: IDF1 with the segmentation's depth 0.802 ->
-  /// 0.828, with true depth 0.8995 -> 0.903.
+  /// The slow identity descriptor is not updated by another person's views, so the running one
+  /// shows a swap the association made at a crossing.
   double identity_check = 0.0;
-  /// Not the method (0 = off; needs identity_check and reid_memory > 0): a confirmed track whose
-  /// last this many views in a row were all inconsistent with its identity descriptor (farther
-  /// than 0.35) follows another person than the one its id was given to. When its running
-  /// descriptor then lies within 0.35 of the identity of a remembered lost id, and nearer it
-  /// than its own identity by identity_check, it takes that id and identity; its old id and
-  /// identity are remembered in their place, for that person's next new track to be revived
-  /// into. identity_check's pair test cannot undo a swap into a track whose person has a new
-  /// track by now: both identities then describe that person (bench-tracking seed 17, segmentation
-  /// depth: person 4 on person 1's id for 340 frames). bench-tracking, 24 seeds, 10: IDF1 with
-  /// the segmentation's depth 0.828 -> 0.844, with true depth 0.903 -> 0.921, no seed worse.
+  /// identity_check's pair test cannot undo a swap into a track whose person has a new track by
+  /// now: both identities then describe that person.
   int identity_repair = 0;
-  /// Weight of the track's descriptor when a matched detection updates it (running average).
-  double appearance_memory = 0.8;
   BoxNoiseParams noise;
 };
 
@@ -277,78 +175,66 @@ class KalmanBoxTracker {
     bool described_now = false;           // `appearance` took this update()'s detection
     int inconsistent_views = 0;           // identity_repair: views in a row far from `identity`
   };
-
-  /// The measurement of a matched observation: box and the depth `depth` (<= 0: none), or,
-  /// when depth_gate holds it, the box with the track's own depth as unknown.
-  BoxMeasurement measurementFor(Tracked& tr, const cv::Rect2f& box, double depth,
-                                BoxMeasurementCovariance& R) const;
-
-  /// The depth of `o` that `tr` is compared with and updated by: o.depth, or with
-  /// alternative_depth the one of o.depth and o.depth_alt nearer (in ratio) the track's depth.
-  double depthFor(const Tracked& tr, const BoxObservation& o) const;
-  /// One assignment round: the tracks without an observation yet (only those already coasting
-  /// when `coastingOnly`) against the observations not used yet, by the Hungarian algorithm on
-  /// the depth IoU, pairs accepted when rho > threshold. Predicted boxes are clipped to `image`
-  /// (when given) as detections are.
-  void associate(const std::vector<BoxObservation>& observations, const cv::Size& image,
-                 double threshold, bool coastingOnly, std::vector<int>& observationOf,
-                 std::vector<char>& observationUsed) const;
-  /// Records `round` as the match of the tracks given an observation since the last call.
-  void noteRound(const std::vector<int>& observationOf, TrackMatch round);
-  /// innovation_gate: the squared Mahalanobis distance of `box`'s centre from `predicted`'s
-  /// (the track's predicted box, clipped as the detection is).
-  double centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
-                           const cv::Rect2f& box) const;
-  void startTrack(const BoxObservation& observation, int index);
-  /// reid_max_distance > 0: the appearance round for coasting tracks (see there);
-  /// `onAnothersSurface`: givenAnothersSurface per observation (read with reid_at_track_depth).
-  void reidentify(const std::vector<BoxObservation>& observations,
-                  const std::vector<char>& onAnothersSurface, std::vector<int>& observationOf,
-                  std::vector<char>& observationUsed) const;
-  /// reset_at_border: restarts what the image border cut from the measurement (see there).
-  void restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box, const BoxMeasurement& z,
-                            const cv::Size& image) const;
-  /// descriptor_own_surface: per observation, whether its depth is the surface of another
-  /// observation (`onAnothersSurface`, givenAnothersSurface per observation) or of another
-  /// recent track (see there), given the association so far.
-  std::vector<char> onOthersSurface(const std::vector<BoxObservation>& observations,
-                                    const std::vector<int>& observationOf,
-                                    std::vector<char> onAnothersSurface) const;
-  /// reid_memory: tracked_[index] (just confirmed, or confirmed before and given its first
-  /// descriptor now) takes the id of the remembered or coasting track of closest appearance,
-  /// when close enough; that one is forgotten (a coasting one is
-  /// marked Lost, to be removed by the caller).
-  void reviveIdentity(size_t index);
-  /// identity_check: `descriptor` (a view the running descriptor took) updates the track's
-  /// identity descriptor when it is consistent with it.
-  void updateIdentity(Tracked& tr, const cv::Mat& descriptor) const;
-  /// identity_check: swaps the ids (and identity descriptors) of two confirmed tracks described
-  /// this frame whose views each match the other's identity better (see there).
-  void checkIdentities();
-  /// identity_repair: gives tracked_[index] the id whose identity matches it (see there).
-  void repairIdentity(size_t index);
-  /// The appearance distance of a track's descriptor `a` (the track at `depth`) to observation
-  /// `o`: to o's own descriptor, or with reid_at_track_depth the smaller of that and the one to
-  /// o's colours at `depth`; `atDepth` tells whether the latter decided.
-  double reidDistance(const cv::Mat& a, double depth, const BoxObservation& o, bool& atDepth) const;
-  bool remembers() const { return params_.reid_memory > 0 && params_.reid_max_distance > 0; }
-  /// True when the unmatched track `t` is to be dropped now.
-  bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
-
   struct Remembered {
     int id = 0;
     std::string category;
     cv::Mat appearance;
-    double lost_at = 0;     // s
-    cv::Mat identity = {};  // identity_check's descriptor; empty without
+    double lost_at = 0;      // s
+    cv::Mat identity = {};   // identity_check's descriptor; empty without
     int identity_views = 0;  // views that identity took
   };
-  /// The index in remembered_ of the entry of t's category whose descriptor (`descriptorOf` the
-  /// entry: its identity, its running descriptor or either) lies nearest t's running
-  /// descriptor, if nearer than `best` (then lowered to its distance); -1 otherwise.
+  /// The association of one update(): per track the observation it takes (-1: none), per
+  /// observation whether a track took it.
+  struct Association {
+    std::vector<int> observationOf;
+    std::vector<char> observationUsed;
+  };
+
+  // Each function is described where it is defined.
+  // KalmanBoxTracker.cpp: update()'s phases and the lifecycle of one track.
+  std::vector<size_t> updateTracks(const std::vector<BoxObservation>& observations,
+                                   const std::vector<int>& observationOf,
+                                   const std::vector<char>& othersSurface, const cv::Size& image);
+  bool takeObservation(Tracked& tr, const std::vector<BoxObservation>& observations, size_t j,
+                       bool onOthersSurface, const cv::Size& image);
+  bool missed(Tracked& tr, const cv::Size& image);
+  BoxMeasurement measurementFor(Tracked& tr, const cv::Rect2f& box, double depth,
+                                BoxMeasurementCovariance& R) const;
+  void restartCutComponents(KalmanBoxFilter& filter, const cv::Rect2f& box, const BoxMeasurement& z,
+                            const cv::Size& image) const;
+  bool loseAfterMiss(const Tracked& t, const cv::Size& image) const;
+  void startTrack(const BoxObservation& observation, int index);
+  void noteRound(const std::vector<int>& observationOf, TrackMatch round);
+
+  // KalmanBoxTrackerAssociation.cpp: the depth-IoU rounds.
+  std::vector<BoxObservation> withUsableAlternatives(const std::vector<BoxObservation>& input,
+                                                     const cv::Size& image) const;
+  void associateByDepthIoU(const std::vector<BoxObservation>& observations, const cv::Size& image,
+                           Association& a);
+  double depthFor(const Tracked& tr, const BoxObservation& o) const;
+  void associate(const std::vector<BoxObservation>& observations, const cv::Size& image,
+                 double threshold, bool coastingOnly, Association& a) const;
+  double centreInnovation2(const Tracked& tr, const cv::Rect2f& predicted,
+                           const cv::Rect2f& box) const;
+
+  // KalmanBoxTrackerIdentity.cpp: appearance, identities and the revival.
+  void reidentify(const std::vector<BoxObservation>& observations,
+                  const std::vector<char>& onAnothersSurface, Association& a) const;
+  double reidDistance(const cv::Mat& a, double depth, const BoxObservation& o, bool& atDepth) const;
+  std::vector<char> onOthersSurface(const std::vector<BoxObservation>& observations,
+                                    const std::vector<int>& observationOf,
+                                    std::vector<char> onAnothersSurface) const;
+  void takeDescriptor(Tracked& tr, const cv::Mat& descriptor) const;
+  void updateIdentity(Tracked& tr, const cv::Mat& descriptor) const;
+  void checkAndRepairIdentities();
+  void checkIdentities();
+  void repairIdentity(size_t index);
+  void reviveIdentities(const std::vector<size_t>& confirmed);
+  void reviveIdentity(size_t index);
   int closestRemembered(const Tracked& t,
                         const std::function<const cv::Mat&(const Remembered&)>& descriptorOf,
                         double& best) const;
+  bool remembers() const { return params_.reid_memory > 0 && params_.reid_max_distance > 0; }
 
   KalmanBoxTrackerParams params_;
   std::vector<Tracked> tracked_;
