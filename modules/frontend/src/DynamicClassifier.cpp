@@ -8,6 +8,8 @@
 #include <dynslam/core/Median.h>
 #include <algorithm>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 namespace dynslam::frontend {
 namespace {
@@ -58,6 +60,21 @@ bool inStillObjectsBox(const std::vector<ObjectRegion>& regions, const DecisionO
     if (!decisionOf(r.object_id).value_or(false)) return true;
   }
   return false;
+}
+
+/// `p` with the settings of its parts that follow from its own, after checking the rules a
+/// key's range cannot state.
+DynamicClassifierParams withDerivedSettings(DynamicClassifierParams p) {
+  const auto require = [](bool ok, const std::string& key, double value, const char* rule) {
+    if (!ok) throw std::invalid_argument(key + " = " + std::to_string(value) + ": must be " + rule);
+  };
+  require(p.depth_window % 2 == 1, "depth_window", p.depth_window, "odd");
+  require(p.moving_feature_max_speed > p.moving_feature_speed, "moving_feature_max_speed",
+          p.moving_feature_max_speed, "> moving_feature_speed");
+  p.camera.depth_sigma_z2 = p.rigid.depth_sigma_z2 = p.depth_sigma_z2;
+  // The rigid sets see the window-depth points: their noise is the reading's over ~0.8 w.
+  p.rigid.point_noise_reduction = 0.8 * std::max(1, p.depth_window);
+  return p;
 }
 
 }  // namespace
@@ -133,20 +150,23 @@ void DynamicClassifier::forgetObjectsUnseenSince(double t) {
 
 const char* toString(CameraMotionSource source) {
   switch (source) {
-    case CameraMotionSource::Poses: return "poses";
-    case CameraMotionSource::ImuRotationRegistration: return "imu_rotation+registration";
-    case CameraMotionSource::Registration: return "registration";
-    case CameraMotionSource::ImuRotationConstantVelocity: return "imu_rotation+constant_velocity";
-    case CameraMotionSource::ConstantVelocity: return "constant_velocity";
+    case CameraMotionSource::Poses:
+      return "poses";
+    case CameraMotionSource::ImuRotationRegistration:
+      return "imu_rotation+registration";
+    case CameraMotionSource::Registration:
+      return "registration";
+    case CameraMotionSource::ImuRotationConstantVelocity:
+      return "imu_rotation+constant_velocity";
+    case CameraMotionSource::ConstantVelocity:
+      return "constant_velocity";
   }
   return "?";
 }
 
 DynamicClassifier::DynamicClassifier(DynamicClassifierParams params)
-    : params_(params), cameraEstimator_(params.camera, params.seed) {
-  // The rigid sets see the window-depth points: their noise is the reading's over ~0.8 w.
-  params_.rigid.point_noise_reduction = 0.8 * std::max(1, params_.depth_window);
-}
+    : params_(withDerivedSettings(params)),
+      cameraEstimator_(params_.camera, std::uint32_t(params_.seed)) {}
 
 double DynamicClassifier::cameraVarianceSince(std::size_t frame) const {
   double sum = 0;
@@ -172,7 +192,7 @@ void DynamicClassifier::process(core::Frame& frame) {
     bool has_point = false;
     Eigen::Vector3d P;
     const Observation* previous = nullptr;  ///< the feature's point in the previous frame
-    double speed = -1;  ///< |scene flow| / time over the window, m/s; < 0: not measured
+    double speed = -1;       ///< |scene flow| / time over the window, m/s; < 0: not measured
     double speed_sigma = 0;  ///< its depth noise, m/s
     bool carried_outside_box = false;  ///< membership carried over, pixel outside the track's box
   };
@@ -189,12 +209,12 @@ void DynamicClassifier::process(core::Frame& frame) {
   };
   std::map<int, const core::Track*> tracks;
   for (const auto& t : frame.tracks) tracks[t.id] = &t;
-  std::map<int, ObjectRegion> maskless;  // tracks seen this frame without a mask
+  std::map<int, ObjectRegion> maskless;       // tracks seen this frame without a mask
   std::map<int, const ObjectRegion*> masked;  // tracks with a mask this frame
   for (const auto& r : regions) masked.emplace(r.object_id, &r);
   std::map<std::int64_t, int> nextObjectOf;
-  const bool windowed = params_.depth_window > 1 && !frame.depth.empty() &&
-                        frame.depth.type() == CV_32FC1;
+  const bool windowed =
+      params_.depth_window > 1 && !frame.depth.empty() && frame.depth.type() == CV_32FC1;
   std::vector<ObjectRegion> farBoxes;
   if (params_.far_object_min_depth > 0)
     for (auto& b : depthlessObjectBoxes(frame))
@@ -236,7 +256,7 @@ void DynamicClassifier::process(core::Frame& frame) {
           break;
         }
     const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2,
-                                             params_.camera.depth_sigma_z2, buf)
+                                           params_.depth_sigma_z2, buf)
                              : f.depth;
     if (!(z > 0) || !(f.depth > 0)) continue;
     c.has_point = true;
@@ -254,8 +274,8 @@ void DynamicClassifier::process(core::Frame& frame) {
 
   // 2. The camera's motion since the previous frame, and the chain of poses for the window.
   if (prevT_) {
-    const auto gyro = gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu,
-                                         frame.T_body_camera);
+    const auto gyro =
+        gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu, frame.T_body_camera);
     // Only the pairs outside every box (background_outside_boxes; else none is boxed). Too few
     // of them and CameraMotionEstimator's constant velocity stands in: the pairs inside boxes but
     // outside masks, which this fell back to before, are the walkers' unmasked parts when
@@ -283,8 +303,8 @@ void DynamicClassifier::process(core::Frame& frame) {
 
   // 3. Each object's speed from its features' scene flow over the window.
   std::map<int, std::vector<Eigen::Vector3d>> velocities;
-  std::map<int, double> velocityVar;    // depth-noise variances, summed over the features
-  std::map<int, double> cameraVarSum;   // camera-translation variances, summed likewise
+  std::map<int, double> velocityVar;   // depth-noise variances, summed over the features
+  std::map<int, double> cameraVarSum;  // camera-translation variances, summed likewise
   std::map<int, const ObjectRegion*> seen;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     const auto& c = cur[i];
@@ -302,8 +322,8 @@ void DynamicClassifier::process(core::Frame& frame) {
       // Variance of that velocity from the depth noise of both points (the window median
       // divides a reading's sigma by about sqrt(0.64 w^2)).
       const double reduce = 0.8 * std::max(1, params_.depth_window);
-      const double sp = params_.camera.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
-      const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
+      const double sp = params_.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
+      const double sq = params_.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
       const double var = (sp * sp + sq * sq) / (dt * dt);
       const double sigma = std::sqrt(var);
       // Faster than a person moves, beyond its noise: a depth jump (max_nonrigid_flow_speed).
@@ -332,8 +352,7 @@ void DynamicClassifier::process(core::Frame& frame) {
       // The median of n velocities has about 1.25 sigma / sqrt(n) of depth noise (sigma: their
       // rms); the camera's error is common to all of them and does not average out.
       const double n = double(s.features);
-      const double noise =
-          std::sqrt(1.5625 * velocityVar[id] / n / n + cameraVarSum[id] / n);
+      const double noise = std::sqrt(1.5625 * velocityVar[id] / n / n + cameraVarSum[id] / n);
       const bool over = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
       const auto before = objects_.find(id);
       const int run = over ? (before != objects_.end() ? before->second.moving_run : 0) + 1 : 0;
@@ -379,7 +398,8 @@ void DynamicClassifier::process(core::Frame& frame) {
     it = (seen.count(it->first) && dynamic[it->first]) ? std::next(it) : sets_.erase(it);
   std::map<int, std::set<std::int64_t>> members, tested;
   for (const auto& [id, objectPairs] : pairs) {
-    auto set = sets_.try_emplace(id, params_.rigid, params_.seed + std::uint32_t(id)).first;
+    auto set =
+        sets_.try_emplace(id, params_.rigid, std::uint32_t(params_.seed) + std::uint32_t(id)).first;
     if (!set->second.update(objectPairs, camera_.motion.R,
                             0.5 * (frame.intrinsics.fx + frame.intrinsics.fy)))
       continue;
@@ -400,12 +420,11 @@ void DynamicClassifier::process(core::Frame& frame) {
         still && (wasStatic_.count(f.id) > 0 ||
                   (params_.still_feature_in_still_box && region &&
                    inStillObjectsBox(regions, decisionOf, region->object_id, f.pixel)));
-    const bool movingInStillObject = region && !dynamic[region->object_id] &&
-                                     params_.moving_feature_speed > 0 &&
-                                     cur[i].speed - params_.speed_noise_sigmas *
-                                                        cur[i].speed_sigma >
-                                         params_.moving_feature_speed &&
-                                     cur[i].speed < params_.moving_feature_max_speed;
+    const bool movingInStillObject =
+        region && !dynamic[region->object_id] && params_.moving_feature_speed > 0 &&
+        cur[i].speed - params_.speed_noise_sigmas * cur[i].speed_sigma >
+            params_.moving_feature_speed &&
+        cur[i].speed < params_.moving_feature_max_speed;
     const bool movingFar =
         farOf[i] && dynamic[farOf[i]->object_id] && farSpeed[i] > params_.speed_threshold;
     if (movingInStillObject || movingFar) {

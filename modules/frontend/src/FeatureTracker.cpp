@@ -25,41 +25,15 @@ void require(bool ok, const std::string& key, double value, const char* rule) {
   if (!ok) throw std::invalid_argument(key + " = " + std::to_string(value) + ": must be " + rule);
 }
 
-void validate(const FeatureTrackerParams& p) {
-  const auto& c = p.corners;
-  require(p.max_features >= 1, "max_features", p.max_features, ">= 1");
-  require(c.min_distance_px >= 1, "min_distance_px", c.min_distance_px, ">= 1");
-  require(c.quality_level > 0 && c.quality_level < 1, "quality_level", c.quality_level,
-          "in (0, 1)");
-  require(c.block_size >= 1, "block_size", c.block_size, ">= 1");
-  require(c.grid_cols >= 1, "grid_cols", c.grid_cols, ">= 1");
-  require(c.grid_rows >= 1, "grid_rows", c.grid_rows, ">= 1");
-  require(c.border_px >= 0, "border_px", c.border_px, ">= 0");
-  require(p.klt_window_px >= 3 && p.klt_window_px % 2 == 1, "klt_window_px", p.klt_window_px,
-          "odd and >= 3");
-  require(p.klt_pyramid_levels >= 0 && p.klt_pyramid_levels <= 8, "klt_pyramid_levels",
-          p.klt_pyramid_levels, "in [0, 8]");
-  require(p.klt_predicted_levels >= 0 && p.klt_predicted_levels <= p.klt_pyramid_levels,
-          "klt_predicted_levels", p.klt_predicted_levels, "in [0, klt_pyramid_levels]");
-  require(c.min_eigenvalue >= 0, "min_eigenvalue", c.min_eigenvalue, ">= 0");
-  require(c.level >= 0 && c.level <= p.klt_pyramid_levels, "corner_level", c.level,
-          "in [0, klt_pyramid_levels] (a level of the KLT pyramid)");
-  require(p.klt_max_iterations >= 1, "klt_max_iterations", p.klt_max_iterations, ">= 1");
-  require(p.klt_epsilon > 0, "klt_epsilon", p.klt_epsilon, "> 0");
-  require(p.max_fb_error_px > 0, "max_fb_error_px", p.max_fb_error_px, "> 0");
+/// The rules a key's range cannot state (the ranges are FeatureTrackingOptions::describe()'s).
+void checkRulesBetweenKeys(const FeatureTrackerParams& p) {
+  require(p.klt_window_px % 2 == 1, "klt_window_px", p.klt_window_px, "odd");
+  require(p.klt_predicted_levels <= p.klt_pyramid_levels, "klt_predicted_levels",
+          p.klt_predicted_levels, "<= klt_pyramid_levels");
+  require(p.corners.level <= p.klt_pyramid_levels, "corner_level", p.corners.level,
+          "<= klt_pyramid_levels (a level of the KLT pyramid)");
   require(p.max_klt_residual_ratio == 0 || p.max_klt_residual_ratio >= 1, "max_klt_residual_ratio",
           p.max_klt_residual_ratio, "0 (off) or >= 1");
-  require(p.residual_gate_margin_px >= 0, "residual_gate_margin_px", p.residual_gate_margin_px,
-          ">= 0");
-  const auto& e = p.occlusion_edge;
-  require(e.radius_px >= 0, "occlusion_edge_radius_px", e.radius_px, ">= 0");
-  require(p.depth_edge_radius_px >= 0, "depth_edge_radius_px", p.depth_edge_radius_px, ">= 0");
-  require(e.min_gap_m > 0, "occlusion_edge_min_gap_m", e.min_gap_m, "> 0");
-  require(e.gap_ratio >= 0, "occlusion_edge_gap_ratio", e.gap_ratio, ">= 0");
-  require(p.fundamental_threshold_px > 0, "fundamental_threshold_px", p.fundamental_threshold_px,
-          "> 0");
-  require(p.fundamental_confidence > 0 && p.fundamental_confidence < 1, "fundamental_confidence",
-          p.fundamental_confidence, "in (0, 1)");
 }
 
 /// KLT needs the whole window inside the image to trust a match (VINS-Fusion keeps 1 px).
@@ -98,13 +72,6 @@ class ScopedMs {
 
 }  // namespace
 
-FlowInit flowInitFromString(const std::string& text) {
-  if (text == "gyro") return FlowInit::Gyro;
-  if (text == "previous_motion") return FlowInit::PreviousMotion;
-  if (text == "none") return FlowInit::None;
-  throw std::invalid_argument("flow_init = '" + text + "': must be gyro, previous_motion or none");
-}
-
 std::string toString(FlowInit init) {
   switch (init) {
     case FlowInit::Gyro:
@@ -117,18 +84,9 @@ std::string toString(FlowInit init) {
   return "?";
 }
 
-ResidualGateRegion residualGateRegionFromString(const std::string& text) {
-  if (text == "everywhere") return ResidualGateRegion::Everywhere;
-  if (text == "near_nonrigid") return ResidualGateRegion::NearNonRigid;
-  throw std::invalid_argument("residual_gate_region = '" + text +
-                              "': must be everywhere or near_nonrigid");
+FeatureTracker::FeatureTracker(FeatureTrackerParams params) : params_(params) {
+  checkRulesBetweenKeys(params_);
 }
-
-std::string toString(ResidualGateRegion region) {
-  return region == ResidualGateRegion::Everywhere ? "everywhere" : "near_nonrigid";
-}
-
-FeatureTracker::FeatureTracker(FeatureTrackerParams params) : params_(params) { validate(params_); }
 
 void FeatureTracker::reset() {
   tracks_.clear();
@@ -420,9 +378,8 @@ void FeatureTracker::pruneAndDetect(const cv::Mat& gray,
   const size_t step = pyramid_.size() > size_t(params_.klt_pyramid_levels) + 1 ? 2 : 1;
   const cv::Mat& scored =
       params_.corners.level == 0 ? gray : pyramid_.at(step * size_t(params_.corners.level));
-  for (const auto& p :
-       detectGridCorners(scored, free, occupied, wanted, params_.corners, &stats_.cells_computed,
-                         rejected))
+  for (const auto& p : detectGridCorners(scored, free, occupied, wanted, params_.corners,
+                                         &stats_.cells_computed, rejected))
     tracks_.push_back({next_id_++, p, median_velocity_, 1});
   stats_.detected = int(tracks_.size()) - stats_.tracked;
 }

@@ -662,6 +662,31 @@ TEST(DynamicClassificationStage, ReadsItsSectionAndRejectsBadValues) {
             std::string::npos);
 }
 
+TEST(DynamicClassificationStage, ASettingWithoutTheOneItActsThroughIsAnErrorNamingBoth) {
+  const auto messageOf = [](const std::string& text) {
+    try {
+      DynamicClassificationStage s;
+      s.configure(core::IniConfig::fromText("[DynamicClassification]\n" + text, "test.ini"),
+                  "DynamicClassification");
+    } catch (const core::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string msg = messageOf("still_feature_in_still_box = true\n");
+  EXPECT_NE(msg.find("still_feature_in_still_box"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("still_feature_speed > 0"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("test.ini"), std::string::npos) << msg;
+  EXPECT_EQ(messageOf("still_feature_speed = 0.2\nstill_feature_in_still_box = true\n"), "");
+  EXPECT_NE(messageOf("still_above_feet_fraction = 0.25\n").find("still_feature_speed"),
+            std::string::npos);
+  EXPECT_NE(messageOf("depth_sigma_z2 = 0\nrigid_noise_gates = true\nrigid_pixel_sigma = 0.3\n")
+                .find("depth_sigma_z2 > 0"),
+            std::string::npos);
+  EXPECT_NE(messageOf("depth_window = 4\n").find("depth_window = 4"), std::string::npos)
+      << "a rule beyond the key's range, named too";
+}
+
 // A walker's mask that once spilled over background (here: its box grown by 60 px for one
 // frame, as a mask takes a wall within e of the walker) gives the new corners there the
 // walker's membership, and with no mask holding them after it carries over frame to frame.

@@ -105,7 +105,8 @@ TEST(FeatureTrackingStage, BadInputIsAnErrorNamingTheKey) {
                 .find("occlusion_edge_min_gap_m"),
             std::string::npos);
   const std::string e = errorOf("[FeatureTracking]\nfundamental_confidence = 1\n");
-  EXPECT_NE(e.find("[FeatureTracking] fundamental_confidence"), std::string::npos) << e;
+  EXPECT_NE(e.find("[FeatureTracking] in test.ini: fundamental_confidence"), std::string::npos)
+      << e;
   EXPECT_NE(e.find("test.ini"), std::string::npos) << e;
 }
 

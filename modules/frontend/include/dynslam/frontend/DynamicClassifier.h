@@ -207,7 +207,10 @@ struct DynamicClassifierParams {
   double far_object_pixel_sigma = 0.5;  ///< px; feature tracking noise of one pixel position
   RigidPointSetParams rigid;     ///< the objects' rigid sets (method.md section 4)
   CameraMotionParams camera;     ///< the background registration
-  std::uint32_t seed = 1;        ///< RANSAC draws (deterministic runs)
+  /// Depth noise sigma(z) = depth_sigma_z2 z^2 (1/m): DynamicClassifier gives it to the camera
+  /// motion and the rigid sets (their own depth_sigma_z2 is set from it).
+  double depth_sigma_z2 = 0.0015;
+  int seed = 1;                  ///< RANSAC draws (deterministic runs)
 };
 
 /// Counters for the stage's log and the bench.
@@ -218,6 +221,9 @@ struct ClassifierCounts {
 
 class DynamicClassifier {
  public:
+  /// Throws std::invalid_argument naming a parameter that breaks a rule between keys
+  /// (depth_window odd, moving_feature_max_speed above moving_feature_speed); the ranges of
+  /// single keys are checked where the options are read (DynamicClassificationOptions).
   explicit DynamicClassifier(DynamicClassifierParams params = {});
 
   /// Fills frame.features[*].object_id and feature_class, frame.object_motions and

@@ -25,8 +25,7 @@ enum class FlowInit {
   None,            ///< the point's previous pixel (plain pyramidal KLT)
 };
 
-/// "gyro", "previous_motion", "none"; std::invalid_argument naming the text otherwise.
-FlowInit flowInitFromString(const std::string& text);
+/// "gyro", "previous_motion", "none".
 std::string toString(FlowInit init);
 
 /// Which tracks the KLT residual gate judges.
@@ -34,10 +33,6 @@ enum class ResidualGateRegion {
   Everywhere,   ///< every track
   NearNonRigid  ///< tracks outside every object mask, within the margin of a non-rigid one's box
 };
-
-/// "everywhere", "near_nonrigid"; std::invalid_argument naming the text otherwise.
-ResidualGateRegion residualGateRegionFromString(const std::string& text);
-std::string toString(ResidualGateRegion region);
 
 struct FeatureTrackerParams {
   int max_features = 150;    ///< tracked + new corners per frame
@@ -115,7 +110,9 @@ struct FeatureTrackerStats {
 
 class FeatureTracker {
  public:
-  /// Throws std::invalid_argument naming a parameter out of range.
+  /// Throws std::invalid_argument naming a parameter that breaks a rule between keys (window
+  /// odd, levels within the pyramid, residual ratio 0 or >= 1); the ranges of single keys are
+  /// checked where the options are read (FeatureTrackingOptions).
   explicit FeatureTracker(FeatureTrackerParams params = {});
 
   /// Tracks the previous frame's features into `frame` (its colour image, intrinsics, IMU
