@@ -26,9 +26,7 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
 
 /// The middle half of `box` in width and height. The far objects' features near their box's
 /// edge are mostly the background around a small object or corners on its silhouette, which
-/// slide with it (bench-classification, outdoor_street_high seeds 1-3, far_object_min_depth =
-/// 10: the whole box recall +0.024 / +0.043 / +0.070 for precision -0.016 / -0.006 / -0.028; the
-/// middle half +0.013 / +0.027 / +0.034 for -0.001 / +0.006 / -0.009).
+/// slide with it (the whole box: docs/notes/frontend.md, 2026-11-28).
 cv::Rect centralHalf(const cv::Rect& box) {
   return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
 }
@@ -115,7 +113,7 @@ std::vector<double> DynamicClassifier::decideFarObjects(
     auto v = speeds.find(id);
     s.features = v == speeds.end() ? 0 : int(v->second.size());
     // One feature suffices: the noise term grows as features are fewer (a car 20 m away holds
-    // one or two tracked corners: min_flow_features = 3 left 85 % of such objects undecided).
+    // one or two tracked corners, and min_flow_features left most such objects undecided).
     if (s.features >= 1) {
       const double n = double(s.features);
       s.speed = core::upperMedianInPlace(v->second);
@@ -277,10 +275,8 @@ void DynamicClassifier::process(core::Frame& frame) {
     const auto gyro =
         gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu, frame.T_body_camera);
     // Only the pairs outside every box (background_outside_boxes; else none is boxed). Too few
-    // of them and CameraMotionEstimator's constant velocity stands in: the pairs inside boxes but
-    // outside masks, which this fell back to before, are the walkers' unmasked parts when
-    // people fill the view (indoor_people_low with injected faults: 2-2.5 cm per frame of
-    // false depth motion for five frames, a standing person read 0.24 m/s and turned dynamic).
+    // of them and CameraMotionEstimator's constant velocity stands in, not the pairs inside
+    // boxes but outside masks: those are the walkers' unmasked parts when people fill the view.
     size_t w = 0;
     for (size_t i = 0; i < boxed.size(); ++i)
       if (!boxed[i]) {

@@ -97,8 +97,7 @@ bool AdaptiveRigidPointSet::update(const std::vector<PointPair>& pairs,
   // within ray_gate_sigmas there; the membership stays RANSAC's, see the params), then
   // rotation_prior_sigma's blend. The blend's translation is fitted on the same gated members:
   // on all of RANSAC's it took back a member the gate had left out (a corner sliding along a
-  // car's silhouette, 6 px off its motion, put the cars' translation 1.3-1.6 cm off with exact
-  // depth; bench-classification, outdoor_street_high seeds 1-2).
+  // car's silhouette; docs/notes/frontend.md, 2026-11-28).
   auto registerPrecisely = [&](const RegistrationResult& r, bool continued) {
     std::vector<int> fitted = r.inliers;
     motion_ = r.motion;

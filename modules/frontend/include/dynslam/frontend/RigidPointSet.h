@@ -53,8 +53,8 @@ struct RigidPointSetParams {
   /// depth's, as above) and across it (this pixel sigma at the point's depth), then refitted on
   /// the members within ray_gate_sigmas of that motion by the same noise (RayNoiseRegistration.h).
   /// The membership stays RANSAC's: made the members, the gate's smaller sets were created afresh
-  /// 11-20 % more often (indoor_people_high), each time with a new virtual centroid. Not the
-  /// method (0: off, Kabsch on the RANSAC inliers). Needs depth_sigma_z2 > 0 and the focal
+  /// more often, each time with a new virtual centroid (docs/notes/frontend.md, 2026-11-28). Not
+  /// the method (0: off, Kabsch on the RANSAC inliers). Needs depth_sigma_z2 > 0 and the focal
   /// length in update().
   double pixel_sigma_px = 0.0;
   double ray_gate_sigmas = 3.5;
