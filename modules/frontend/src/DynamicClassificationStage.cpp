@@ -8,11 +8,9 @@ namespace {
 constexpr core::Keyword<SpeedStatistic> kStatistics[] = {
     {"median_flow", SpeedStatistic::MedianFlow}, {"mean_norm", SpeedStatistic::MeanNorm}};
 
-}  // namespace
-
-void DynamicClassificationOptions::describe(core::OptionVisitor& v) {
+/// The keys of the object decisions and of the feature rules, in the reference's order.
+void describeClassification(core::OptionVisitor& v, DynamicClassifierParams& p) {
   using core::Range;
-  auto& p = classifier;
   const Range off = Range::atLeast(0), positive = Range::above(0), atLeast1 = Range::atLeast(1);
   v.key("speed_threshold", p.speed_threshold, off,
         "m/s; an object moving faster (scene flow / time) is dynamic (method.md: 0.1)");
@@ -62,6 +60,12 @@ void DynamicClassificationOptions::describe(core::OptionVisitor& v) {
         "px; tracking noise of a pixel position, for far_object_min_depth's speed noise");
   v.key("background_outside_boxes", p.background_outside_boxes,
         "camera translation from features outside every box, not just every mask");
+}
+
+/// The keys of the rigid sets' and the camera motion's registrations.
+void describeRegistrations(core::OptionVisitor& v, DynamicClassifierParams& p) {
+  using core::Range;
+  const Range off = Range::atLeast(0), positive = Range::above(0), atLeast1 = Range::atLeast(1);
   v.key("rigid_iterations", p.rigid.ransac.iterations, atLeast1,
         "RANSAC hypotheses of the rigid point sets (method.md: 100)");
   v.key("rigid_sample_size", p.rigid.ransac.sample_size, Range::atLeast(3),
@@ -92,6 +96,14 @@ void DynamicClassificationOptions::describe(core::OptionVisitor& v) {
         "1/m; depth noise sigma = this * z^2: gates/weights the camera translation's pairs and "
         "weighs the rigid sets' precise registration (0: unweighted)");
   v.key("seed", p.seed, off, "seed of the RANSAC draws (runs are repeatable)");
+}
+
+}  // namespace
+
+void DynamicClassificationOptions::describe(core::OptionVisitor& v) {
+  auto& p = classifier;
+  describeClassification(v, p);
+  describeRegistrations(v, p);
 
   // Settings that act only through another: set alone, they would silently do nothing.
   const bool still = p.still_feature_speed > 0, noise = p.depth_sigma_z2 > 0;

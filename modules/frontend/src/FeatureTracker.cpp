@@ -161,23 +161,52 @@ std::vector<cv::Point2f> FeatureTracker::initialGuesses(const core::Frame& frame
   return guesses;
 }
 
+/// The previous frame's tracks after KLT both ways (FeatureTracker::kltBothWays).
+struct FeatureTracker::KltMatches {
+  std::vector<cv::Point2f> previous;  ///< each track's pixel in the previous frame
+  std::vector<cv::Point2f> guesses;   ///< where KLT started
+  std::vector<cv::Point2f> current;   ///< where KLT converged
+  std::vector<float> residual;        ///< KLT's, per track
+  std::vector<size_t> matched;        ///< the tracks that passed the forward-backward check
+};
+
 void FeatureTracker::trackExisting(const core::Frame& frame) {
   stats_.incoming = int(tracks_.size());
   if (tracks_.empty()) return;
+  const KltMatches m = kltBothWays(frame);
+  std::vector<Track> survivors;
+  std::vector<cv::Point2f> survivorsPrevious;
+  passResidualGate(frame, m, survivors, survivorsPrevious);
+  if (params_.fundamental_ransac) {
+    ScopedMs timer(stats_.ms_ransac);
+    rejectByFundamental(frame, survivorsPrevious, survivors);
+  }
+  tracks_ = std::move(survivors);
+  if (!tracks_.empty()) {
+    std::vector<double> vx, vy;
+    for (const auto& t : tracks_) {
+      vx.push_back(t.velocity.x);
+      vy.push_back(t.velocity.y);
+    }
+    median_velocity_ = cv::Point2f(float(core::upperMedian(vx)), float(core::upperMedian(vy)));
+  }
+}
+
+FeatureTracker::KltMatches FeatureTracker::kltBothWays(const core::Frame& frame) {
   const cv::Size size = frame.rgb.size();
   const cv::Size window(params_.klt_window_px, params_.klt_window_px);
   const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
                               params_.klt_max_iterations, params_.klt_epsilon);
-
-  std::vector<cv::Point2f> previous(tracks_.size());
-  for (size_t i = 0; i < tracks_.size(); ++i) previous[i] = tracks_[i].pixel;
+  KltMatches m;
+  m.previous.resize(tracks_.size());
+  for (size_t i = 0; i < tracks_.size(); ++i) m.previous[i] = tracks_[i].pixel;
   bool predicted = false;
-  const std::vector<cv::Point2f> guesses = initialGuesses(frame, previous, predicted);
-  std::vector<cv::Point2f> current = guesses;
+  m.guesses = initialGuesses(frame, m.previous, predicted);
+  m.current = m.guesses;
   std::vector<uchar> status;
-  std::vector<float> residual;
   std::optional<ScopedMs> kltTimer(stats_.ms_klt);
-  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid_, previous, current, status, residual, window,
+  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid_, m.previous, m.current, status, m.residual,
+                           window,
                            predicted ? params_.klt_predicted_levels : params_.klt_pyramid_levels,
                            stop, cv::OPTFLOW_USE_INITIAL_FLOW);
 
@@ -188,78 +217,65 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
   std::vector<size_t> forward;
   std::vector<cv::Point2f> there, back;
   for (size_t i = 0; i < tracks_.size(); ++i) {
-    if (!status[i] || !insideImage(current[i], size)) {
+    if (!status[i] || !insideImage(m.current[i], size)) {
       ++stats_.lost_klt;
       continue;
     }
     forward.push_back(i);
-    there.push_back(current[i]);
-    back.push_back(previous[i]);
+    there.push_back(m.current[i]);
+    back.push_back(m.previous[i]);
   }
   std::vector<uchar> backStatus;
   std::vector<float> backResidual;
   if (!forward.empty())
     cv::calcOpticalFlowPyrLK(pyramid_, previous_pyramid_, there, back, backStatus, backResidual,
                              window, 0, stop, cv::OPTFLOW_USE_INITIAL_FLOW);
-
   kltTimer.reset();
 
-  std::vector<size_t> matched;  // passed forward-backward
   const double maxFb2 = params_.max_fb_error_px * params_.max_fb_error_px;
   for (size_t k = 0; k < forward.size(); ++k) {
-    const cv::Point2f d = back[k] - previous[forward[k]];
+    const cv::Point2f d = back[k] - m.previous[forward[k]];
     if (!backStatus[k] || d.dot(d) > maxFb2) {
       ++stats_.lost_fb;
       continue;
     }
-    matched.push_back(forward[k]);
+    m.matched.push_back(forward[k]);
   }
-  const double maxResidual = residualLimit(residual, matched);
+  return m;
+}
+
+void FeatureTracker::passResidualGate(const core::Frame& frame, const KltMatches& m,
+                                      std::vector<Track>& survivors,
+                                      std::vector<cv::Point2f>& survivorsPrevious) {
+  const double maxResidual = residualLimit(m.residual, m.matched);
   const std::vector<cv::Rect> gateBoxes = residualGateBoxes(frame);
   const auto gated = [&](size_t i) {
-    if (residual[i] <= maxResidual) return false;
+    if (m.residual[i] <= maxResidual) return false;
     if (params_.residual_gate_region == ResidualGateRegion::Everywhere) return true;
     // Tracks on the objects are the classification's to judge (dropping them cost recall).
-    if (insideAnyObjectMask(frame, current[i])) return false;
-    const cv::Point from(cvRound(previous[i].x), cvRound(previous[i].y));
-    const cv::Point to(cvRound(current[i].x), cvRound(current[i].y));
+    if (insideAnyObjectMask(frame, m.current[i])) return false;
+    const cv::Point from(cvRound(m.previous[i].x), cvRound(m.previous[i].y));
+    const cv::Point to(cvRound(m.current[i].x), cvRound(m.current[i].y));
     return std::any_of(gateBoxes.begin(), gateBoxes.end(),
                        [&](const cv::Rect& b) { return b.contains(from) || b.contains(to); });
   };
-
-  std::vector<Track> survivors;
-  std::vector<cv::Point2f> survivorsPrevious;
   std::vector<double> residuals, offsets;
-  for (const size_t i : matched) {
+  for (const size_t i : m.matched) {
     if (gated(i)) {
       ++stats_.lost_residual;
       continue;
     }
     Track t = tracks_[i];
-    t.velocity = current[i] - previous[i];
-    t.pixel = current[i];
+    t.velocity = m.current[i] - m.previous[i];
+    t.pixel = m.current[i];
     ++t.length;
     survivors.push_back(t);
-    survivorsPrevious.push_back(previous[i]);
-    residuals.push_back(residual[i]);
-    offsets.push_back(cv::norm(current[i] - guesses[i]));
+    survivorsPrevious.push_back(m.previous[i]);
+    residuals.push_back(m.residual[i]);
+    offsets.push_back(cv::norm(m.current[i] - m.guesses[i]));
   }
-  if (params_.fundamental_ransac) {
-    ScopedMs timer(stats_.ms_ransac);
-    rejectByFundamental(frame, survivorsPrevious, survivors);
-  }
-  tracks_ = std::move(survivors);
   stats_.median_klt_residual = core::upperMedian(residuals);
   stats_.median_init_offset_px = core::upperMedian(offsets);
-
-  if (!tracks_.empty()) {
-    std::vector<double> vx, vy;
-    for (const auto& t : tracks_) {
-      vx.push_back(t.velocity.x);
-      vy.push_back(t.velocity.y);
-    }
-    median_velocity_ = cv::Point2f(float(core::upperMedian(vx)), float(core::upperMedian(vy)));
-  }
 }
 
 double FeatureTracker::residualLimit(const std::vector<float>& residual,

@@ -15,31 +15,38 @@ constexpr core::Keyword<ResidualGateRegion> kGateRegions[] = {
     {"near_nonrigid", ResidualGateRegion::NearNonRigid},
     {"everywhere", ResidualGateRegion::Everywhere}};
 
+/// The corner detector's keys (GridCornerParams).
+void describeCorners(core::OptionVisitor& v, GridCornerParams& c) {
+  using core::Range;
+  const Range off = Range::atLeast(0), atLeast1 = Range::atLeast(1);
+  const Range openUnit{0, 1, true, true}, level = Range::closed(0, 8);
+  v.key("min_distance_px", c.min_distance_px, atLeast1,
+        "px; minimum spacing between any two features");
+  v.key("quality_level", c.quality_level, openUnit,
+        "Shi-Tomasi: keep corners with min eigenvalue >= this * the best of their cell");
+  v.key("min_eigenvalue", c.min_eigenvalue, off,
+        "Shi-Tomasi: and >= this on the scored level (cornerMinEigenVal units; noise peaks "
+        "~6e-5 at corner_level 1, ~4e-4 at 0: use ~1e-3 there)");
+  v.key("block_size", c.block_size, atLeast1, "px; Shi-Tomasi gradient covariance window");
+  v.key("grid_cols", c.grid_cols, atLeast1,
+        "grid cells across; new corners go to the emptiest first");
+  v.key("grid_rows", c.grid_rows, atLeast1, "grid cells down");
+  v.key("border_px", c.border_px, off, "px; no new corner this close to the image edge");
+  v.key("corner_level", c.level, level,
+        "score corners on this KLT pyramid level, <= klt_pyramid_levels (0 full resolution, 1 "
+        "half: 4x cheaper)");
+}
+
 }  // namespace
 
 void FeatureTrackingOptions::describe(core::OptionVisitor& v) {
   using core::Range;
   auto& t = tracker;
-  auto& g = tracker.corners;
   auto& e = tracker.occlusion_edge;
   const Range off = Range::atLeast(0), positive = Range::above(0), atLeast1 = Range::atLeast(1);
   const Range openUnit{0, 1, true, true}, level = Range::closed(0, 8);
   v.key("max_features", t.max_features, atLeast1, "features per frame: tracked + new corners");
-  v.key("min_distance_px", g.min_distance_px, atLeast1,
-        "px; minimum spacing between any two features");
-  v.key("quality_level", g.quality_level, openUnit,
-        "Shi-Tomasi: keep corners with min eigenvalue >= this * the best of their cell");
-  v.key("min_eigenvalue", g.min_eigenvalue, off,
-        "Shi-Tomasi: and >= this on the scored level (cornerMinEigenVal units; noise peaks "
-        "~6e-5 at corner_level 1, ~4e-4 at 0: use ~1e-3 there)");
-  v.key("block_size", g.block_size, atLeast1, "px; Shi-Tomasi gradient covariance window");
-  v.key("grid_cols", g.grid_cols, atLeast1,
-        "grid cells across; new corners go to the emptiest first");
-  v.key("grid_rows", g.grid_rows, atLeast1, "grid cells down");
-  v.key("border_px", g.border_px, off, "px; no new corner this close to the image edge");
-  v.key("corner_level", g.level, level,
-        "score corners on this KLT pyramid level, <= klt_pyramid_levels (0 full resolution, 1 "
-        "half: 4x cheaper)");
+  describeCorners(v, t.corners);
   v.key("klt_window_px", t.klt_window_px, Range::atLeast(3), "px; KLT window side (odd)");
   v.key("klt_pyramid_levels", t.klt_pyramid_levels, level,
         "KLT pyramid levels above the image when the flow is not predicted");

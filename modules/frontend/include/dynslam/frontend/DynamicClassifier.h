@@ -109,16 +109,48 @@ class DynamicClassifier {
   struct Observation {
     std::size_t frame = 0;  ///< counter of processed frames
     double t = 0;
-    Eigen::Vector3d P;      ///< camera frame of that frame
+    Eigen::Vector3d P;  ///< camera frame of that frame
   };
 
+  struct FrameWork;  // what one frame's phases hand on to the next (DynamicClassifier.cpp)
+
+  // process()'s phases, in their order.
+  /// Each feature's object: the mask holding it, else carried over (carriedRegion), else a
+  /// depthless box's (far_object_min_depth); every feature starts Static.
+  void assignMembership(core::Frame& frame, FrameWork& w);
+  /// The region of the object a feature no mask holds stays on (last frame's, while its track
+  /// lives and its mask box does not hold the pixel), or nullptr; `outsideBox`: the pixel lies
+  /// outside the track's box.
+  const ObjectRegion* carriedRegion(const core::Feature& f, FrameWork& w, bool& outsideBox) const;
+  /// Camera-frame points (window depth), their last frame's points, the background pairs.
+  void placeFeatures(const core::Frame& frame, FrameWork& w) const;
+  /// camera_ since the previous frame, and the chain of poses over the window.
+  void estimateCameraMotion(const core::Frame& frame, FrameWork& w);
+  /// Each object feature's scene-flow speed over the window, summed per object.
+  void measureObjectSpeeds(const core::Frame& frame, FrameWork& w);
+  /// Each object's decision (start_moving_frames), appended to frame.object_motions.
+  void decideObjects(core::Frame& frame, FrameWork& w);
+  /// A new track's decision: the majority of its features' objects of the last frame.
+  bool newTrackDecision(const core::Frame& frame, int id, const FrameWork& w) const;
   /// far_object_min_depth: decides the objects of the depthless boxes from their features
-  /// without depth (farOf: feature index -> the box holding it, or nullptr), appends their
-  /// ObjectMotionState and sets `dynamic`; returns each such feature's lower bound of its own
-  /// speed over the window (m/s, FarPointMotion.h; -1: not measured), by feature index.
-  std::vector<double> decideFarObjects(core::Frame& frame,
-                                       const std::vector<const ObjectRegion*>& farOf,
-                                       std::map<int, bool>& dynamic);
+  /// without depth, appends their ObjectMotionState, and keeps each such feature's lower bound
+  /// of its own speed over the window (m/s, FarPointMotion.h; -1: not measured).
+  void decideFarObjects(core::Frame& frame, FrameWork& w);
+  /// The dynamic objects' rigid sets, appended to frame.rigid_sets.
+  void updateRigidSets(core::Frame& frame, FrameWork& w);
+  /// What decides a feature's class.
+  enum class Verdict {
+    MovingOnItsOwn,  ///< NonRigid: moving in a still object's mask, or a far object's mover
+    StillOffObject,  ///< Static, and off the object it was carried on
+    Static,          ///< background, a still object's, or kept Static by a feature rule
+    ByRigidSet,      ///< a dynamic object's: Rigid or NonRigid by its rigid set
+  };
+  Verdict verdictOf(const core::Frame& frame, size_t i, const FrameWork& w) const;
+  /// Every feature's class, and the features Static for the next frame.
+  void classifyFeatures(core::Frame& frame, FrameWork& w);
+  /// The frame's points and memberships for the next one; forgets what is too old.
+  void rememberFrame(const core::Frame& frame, FrameWork& w);
+
   /// Object `id`'s last decision (dynamic or not), if it is remembered.
   std::optional<bool> lastDecision(int id) const;
   /// Records object `id`'s decision of this frame (time `t`, s).
@@ -155,9 +187,9 @@ class DynamicClassifier {
     int moving_run = 0;    ///< measured frames in a row over the threshold, up to that one
     double decided_t = 0;  ///< when it was last decided (s)
   };
-  std::map<int, ObjectMemory> objects_;                                ///< per object id
-  std::map<int, AdaptiveRigidPointSet> sets_;                          ///< per object id
-  std::map<std::int64_t, int> objectOf_;  ///< feature id -> object id, last frame
+  std::map<int, ObjectMemory> objects_;         ///< per object id
+  std::map<int, AdaptiveRigidPointSet> sets_;   ///< per object id
+  std::map<std::int64_t, int> objectOf_;        ///< feature id -> object id, last frame
   std::unordered_set<std::int64_t> wasStatic_;  ///< features classified Static last frame
 };
 

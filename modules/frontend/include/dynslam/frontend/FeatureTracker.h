@@ -125,7 +125,14 @@ class FeatureTracker {
   std::vector<cv::Point2f> initialGuesses(const core::Frame& frame,
                                           const std::vector<cv::Point2f>& previous,
                                           bool& predicted);
+  struct KltMatches;  // FeatureTracker.cpp
+  /// KLT, forward-backward check, residual gate and fundamental-matrix RANSAC on tracks_.
   void trackExisting(const core::Frame& frame);
+  /// KLT from the previous frame into this one and back (the KLT time in stats_).
+  KltMatches kltBothWays(const core::Frame& frame);
+  /// The matched tracks the residual gate keeps, moved to this frame, with their previous pixels.
+  void passResidualGate(const core::Frame& frame, const KltMatches& m,
+                        std::vector<Track>& survivors, std::vector<cv::Point2f>& survivorsPrevious);
   /// The residual above which a forward-backward survivor is dropped (infinity: no gate).
   double residualLimit(const std::vector<float>& residual,
                        const std::vector<size_t>& matched) const;
@@ -138,8 +145,7 @@ class FeatureTracker {
   /// Drops the tracks at the pixels `where` says; how many.
   int dropTracks(const std::function<bool(const cv::Point2f&)>& where);
   /// Spacing among the tracks, then new corners where `rejected` (optional) does not say no.
-  void pruneAndDetect(const cv::Mat& gray,
-                      const std::function<bool(const cv::Point2f&)>& rejected);
+  void pruneAndDetect(const cv::Mat& gray, const std::function<bool(const cv::Point2f&)>& rejected);
 
   FeatureTrackerParams params_;
   FeatureTrackerStats stats_;

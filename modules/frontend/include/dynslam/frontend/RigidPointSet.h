@@ -105,6 +105,16 @@ class AdaptiveRigidPointSet {
                           const std::vector<Eigen::Vector3d>& q, const std::vector<double>& weights,
                           const Eigen::Matrix3d& cameraRotation, bool continued);
   RigidSetUpdate last_;
+
+  struct PairNoise;  // RigidPointSet.cpp
+  PairNoise pairNoise(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
+                      double focalPx) const;
+  /// motion_ from RANSAC's result `r`: the precise registration (on the rays with
+  /// pixel_sigma_px), then the rotation prior.
+  void registerPrecisely(const RegistrationResult& r, bool continued, const PairNoise& n,
+                         const std::vector<Eigen::Vector3d>& p,
+                         const std::vector<Eigen::Vector3d>& q,
+                         const Eigen::Matrix3d& cameraRotation);
 };
 
 }  // namespace dynslam::frontend
