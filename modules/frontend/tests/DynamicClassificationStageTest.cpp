@@ -60,13 +60,17 @@ TEST(DynamicClassificationStage, ASettingWithoutTheOneItActsThroughIsAnErrorNami
     }
     return std::string();
   };
-  const std::string msg = messageOf("still_feature_in_still_box = true\n");
+  const std::string stillOff = "still_feature_speed = 0\n";
+  const std::string msg = messageOf(stillOff + "still_feature_in_still_box = true\n");
   EXPECT_NE(msg.find("still_feature_in_still_box"), std::string::npos) << msg;
   EXPECT_NE(msg.find("still_feature_speed > 0"), std::string::npos) << msg;
   EXPECT_NE(msg.find("test.ini"), std::string::npos) << msg;
   EXPECT_EQ(messageOf("still_feature_speed = 0.2\nstill_feature_in_still_box = true\n"), "");
-  EXPECT_NE(messageOf("still_above_feet_fraction = 0.25\n").find("still_feature_speed"),
-            std::string::npos);
+  EXPECT_NE(messageOf(stillOff +
+                      "still_feature_in_still_box = false\nstill_carried_outside_box = false\n")
+                .find("still_above_feet_fraction"),
+            std::string::npos)
+      << "its default 0.25 needs still_feature_speed too";
   EXPECT_NE(messageOf("depth_sigma_z2 = 0\nrigid_noise_gates = true\nrigid_pixel_sigma = 0.3\n")
                 .find("depth_sigma_z2 > 0"),
             std::string::npos);

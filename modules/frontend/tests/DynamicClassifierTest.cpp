@@ -6,6 +6,7 @@
 // depth range, missed detections, the camera motion's background, start_moving_frames and what
 // is forgotten.
 #include "ClassifierScene.h"
+#include "MethodSettings.h"
 
 #include <dynslam/frontend/DynamicClassifier.h>
 
@@ -23,7 +24,7 @@ using namespace testing;
 
 TEST(DynamicClassifier, ClassifiesMoversAndNonMovers) {
   const Scene scene;
-  DynamicClassifier classifier;  // defaults: 0.1 m/s, window 10, method's RANSAC
+  DynamicClassifier classifier(methodClassification());  // 0.1 m/s, window 10, method's RANSAC
   std::map<int, core::ObjectMotionState> last;
   core::Frame f;
   const int frames = 15;
@@ -115,7 +116,7 @@ core::Frame classifyWithFarCars(double minDepth) {
     driving.emplace_back(-4 + 1.0 * u(rng), 0.5 + 0.4 * u(rng), 25 + 1.0 * u(rng));
     parked.emplace_back(-2 + 1.0 * u(rng), -1.5 + 0.4 * u(rng), 25 + 1.0 * u(rng));
   }
-  DynamicClassifierParams params;
+  DynamicClassifierParams params = methodClassification();
   params.far_object_min_depth = minDepth;
   DynamicClassifier classifier(params);
   core::Frame f;
@@ -184,7 +185,7 @@ TEST(DynamicClassifier, ObjectsBeyondTheDepthRangeAreJudgedFromTheirPixels) {
 
 TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoasts) {
   const Scene scene;
-  DynamicClassifier classifier;
+  DynamicClassifier classifier(methodClassification());
   core::Frame f;
   for (int k = 0; k < 12; ++k) {
     f = scene.frame(k);
@@ -208,7 +209,7 @@ TEST(DynamicClassifier, AMissedDetectionKeepsTheObjectsFeaturesWhileItsTrackCoas
 TEST(DynamicClassifier, TheCameraMotionIgnoresFeaturesInsideBoxesButOutsideMasks) {
   auto worstError = [](bool outsideBoxes) {
     const Scene scene;
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.background_outside_boxes = outsideBoxes;
     DynamicClassifier classifier(params);
     double worst = 0;
@@ -230,7 +231,7 @@ TEST(DynamicClassifier, TheCameraMotionIgnoresFeaturesInsideBoxesButOutsideMasks
 
 TEST(DynamicClassifier, TheMethodsFrameToFrameSettingsAgreeOnCleanData) {
   const Scene scene;
-  DynamicClassifierParams params;
+  DynamicClassifierParams params = methodClassification();
   params.speed_window = 1;
   params.speed_statistic = SpeedStatistic::MeanNorm;
   DynamicClassifier classifier(params);
@@ -254,7 +255,7 @@ TEST(DynamicClassifier, TheMethodsFrameToFrameSettingsAgreeOnCleanData) {
 // walker, already moving, is decided at once as before. A swap held for two frames turns it.
 TEST(DynamicClassifier, AStillObjectStartsMovingOnlyAfterStartMovingFramesInARow) {
   auto standingDynamic = [](int startMovingFrames, int swapFrames) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.start_moving_frames = startMovingFrames;
     const Scene scene;
     DynamicClassifier classifier(params);
@@ -285,7 +286,7 @@ TEST(DynamicClassifier, AStillObjectStartsMovingOnlyAfterStartMovingFramesInARow
 // for 60 s.
 TEST(DynamicClassifier, ForgetsObjectsNotSeenForLong) {
   const Scene scene;
-  DynamicClassifier classifier;
+  DynamicClassifier classifier(methodClassification());
   std::map<int, double> decidedAt;  // object id -> when it was decided
   double t = 0;
   for (int k = 0; k < 600; ++k) {

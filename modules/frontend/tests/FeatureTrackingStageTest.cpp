@@ -1,5 +1,7 @@
 // The FeatureTracking stage: registered by name, configured from [FeatureTracking] with every
 // key documented, clear errors naming a bad key, features written to the frame.
+#include "MethodSettings.h"
+
 #include <dynslam/core/Config.h>
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/frontend/FeatureTrackingStage.h>
@@ -24,6 +26,17 @@ std::string errorOf(const std::string& ini) {
     return e.what();
   }
   return "";
+}
+
+/// [FeatureTracking] with the method's settings (MethodSettings.h), then the lines of `ini`
+/// (key = value) over them.
+core::IniConfig methodTrackingWith(const std::string& ini) {
+  auto cfg = core::IniConfig::fromText(
+      std::string("[FeatureTracking]\n") + frontend::testing::kMethodTrackingIni, "test.ini");
+  std::istringstream lines(ini);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) cfg.applyOverride("FeatureTracking." + line);
+  return cfg;
 }
 
 /// A textured image shifted by `shift` pixels: something to track.
@@ -111,7 +124,7 @@ TEST(FeatureTrackingStage, BadInputIsAnErrorNamingTheKey) {
 
 TEST(FeatureTrackingStage, WritesStaticFeaturesWithIdsAndDepth) {
   FeatureTrackingStage stage;
-  stage.configure(core::IniConfig::fromText("[FeatureTracking]\n"), "FeatureTracking");
+  stage.configure(methodTrackingWith(""), "FeatureTracking");
   core::Frame first = texturedFrame(0, 0), second = texturedFrame(1, 6);
   stage.process(first);
   stage.process(second);
@@ -162,9 +175,7 @@ namespace {
 double residualGateRun(const std::string& ini, int personOnTheRight, size_t& kept,
                        size_t& keptChanged) {
   FeatureTrackingStage stage;
-  stage.configure(
-      core::IniConfig::fromText("[FeatureTracking]\nfundamental_ransac = false\n" + ini),
-      "FeatureTracking");
+  stage.configure(methodTrackingWith("fundamental_ransac = false\n" + ini), "FeatureTracking");
   core::Frame first = texturedFrame(0, 0), second = texturedFrame(1, 6);
   cv::Mat right = second.rgb(cv::Rect(440, 0, 200, 480));
   right.convertTo(right, -1, 0.5, 0.5 * 128);
@@ -207,7 +218,7 @@ double residualGateRun(const std::string& ini, int personOnTheRight, size_t& kep
 TEST(FeatureTrackingStage, ResidualGateDropsPatchesWhoseAppearanceChanged) {
   const auto run = residualGateRun;
   size_t kept = 0, changed = 0;
-  EXPECT_EQ(run("", 1, kept, changed), 0.0) << "the gate is off by default";
+  EXPECT_EQ(run("", 1, kept, changed), 0.0) << "the method's settings: the gate off";
   EXPECT_GT(changed, 20u) << "without the gate the changed patches are tracked";
   const size_t keptOff = kept, changedOff = changed;
   for (const int person : {0, 1}) {

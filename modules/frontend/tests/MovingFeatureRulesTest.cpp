@@ -2,6 +2,7 @@
 // (moving_feature_speed with the noise margin, max_nonrigid_flow_speed), on the synthetic scene
 // (ClassifierScene.h).
 #include "ClassifierScene.h"
+#include "MethodSettings.h"
 
 #include <dynslam/frontend/DynamicClassifier.h>
 
@@ -23,7 +24,7 @@ using namespace testing;
 // standing person's own features stay Static.
 TEST(DynamicClassifier, MovingFeaturesInAStillObjectsMaskAreNonRigid) {
   auto run = [](double movingSpeed) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.moving_feature_speed = movingSpeed;
     const core::Frame f = classifyWithEditedMasks(params, [](std::vector<core::ObjectMask>& m) {
       const cv::Rect roi = m[0].roi | m[1].roi;
@@ -55,8 +56,8 @@ TEST(DynamicClassifier, MovingFeaturesInAStillObjectsMaskAreNonRigid) {
 // per frame at 4.5 m), within two sigmas of the sensor model's noise (about 0.3 m/s).
 TEST(DynamicClassifier, AStillObjectsNoisyFlowIsNotMotion) {
   auto run = [](double sigmas) {
-    DynamicClassifierParams params;
-    params.moving_feature_speed = 0.8;  // as params/sim_frontend.ini
+    DynamicClassifierParams params = methodClassification();
+    params.moving_feature_speed = 0.8;  // as shipped
     params.speed_noise_sigmas = sigmas;
     const Scene scene;
     DynamicClassifier classifier(params);
@@ -93,7 +94,7 @@ TEST(DynamicClassifier, AStillObjectsNoisyFlowIsNotMotion) {
 // max_nonrigid_flow_speed those flows measure nothing and the person stays still.
 TEST(DynamicClassifier, FlowsFasterThanAPersonMovesAreDepthJumpsNotMotion) {
   auto run = [](double maxSpeed) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.max_nonrigid_flow_speed = maxSpeed;
     const Scene scene;
     DynamicClassifier classifier(params);

@@ -3,6 +3,7 @@
 // still_carried_outside_box, still_above_feet_fraction), on the synthetic scene
 // (ClassifierScene.h).
 #include "ClassifierScene.h"
+#include "MethodSettings.h"
 
 #include <dynslam/frontend/DynamicClassifier.h>
 
@@ -25,7 +26,7 @@ using namespace testing;
 // stay dynamic.
 TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
   auto run = [](double stillSpeed) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.still_feature_speed = stillSpeed;
     const core::Frame f = classifyWithEditedMasks(params, [](std::vector<core::ObjectMask>& m) {
       // The walker's pixels and those of the standing person's left half, not the wall
@@ -67,7 +68,7 @@ TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
 // and inside the box of an object judged not to move.
 TEST(DynamicClassifier, StillFeaturesInAStillObjectsBoxAreStaticThoughNeverStaticBefore) {
   auto run = [](bool inStillBox) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.still_feature_speed = 0.2;
     params.still_feature_in_still_box = inStillBox;
     const Scene scene;
@@ -123,7 +124,7 @@ TEST(DynamicClassifier, StillFeaturesInAStillObjectsBoxAreStaticThoughNeverStati
 // the walker's own depth stays the walker's.
 TEST(DynamicClassifier, NewFeaturesInAStillObjectsBoxGoByDepth) {
   auto run = [](bool byDepth) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.still_feature_speed = 0.2;
     params.still_feature_in_still_box = true;
     params.unmeasured_feature_by_depth = byDepth;
@@ -184,7 +185,7 @@ TEST(DynamicClassifier, NewFeaturesInAStillObjectsBoxGoByDepth) {
 // stay dynamic.
 TEST(DynamicClassifier, StillFeaturesCarriedOutsideTheTracksBoxLeaveTheObject) {
   auto run = [](bool leave) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.still_feature_speed = 0.2;
     params.still_carried_outside_box = leave;
     const Scene scene;
@@ -257,7 +258,7 @@ TEST(DynamicClassifier, StillFeaturesAboveAWalkersFeetAreStatic) {
     feet.emplace_back(8000 + i, at(box12.y + box12.height * 0.95));
   }
   auto run = [&](double fraction) {
-    DynamicClassifierParams params;
+    DynamicClassifierParams params = methodClassification();
     params.still_feature_speed = 0.2;
     params.still_above_feet_fraction = fraction;
     DynamicClassifier classifier(params);

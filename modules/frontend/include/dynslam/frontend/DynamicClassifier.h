@@ -55,18 +55,18 @@ struct DynamicClassifierParams {
   SpeedStatistic speed_statistic = SpeedStatistic::MedianFlow;
   double speed_noise_sigmas = 2.0;
   int min_flow_features = 3;
-  int start_moving_frames = 1;
-  double still_feature_speed = 0.0;
-  bool still_feature_in_still_box = false;
-  bool unmeasured_feature_by_depth = false;
-  bool still_carried_outside_box = false;
-  double still_above_feet_fraction = 0.0;
-  double moving_feature_speed = 0.0;
+  int start_moving_frames = 2;
+  double still_feature_speed = 0.2;
+  bool still_feature_in_still_box = true;
+  bool unmeasured_feature_by_depth = true;
+  bool still_carried_outside_box = true;
+  double still_above_feet_fraction = 0.25;
+  double moving_feature_speed = 0.8;
   double moving_feature_max_speed = 2.5;
-  double max_nonrigid_flow_speed = 0.0;
+  double max_nonrigid_flow_speed = 2.5;
   int depth_window = 5;
   bool background_outside_boxes = true;
-  double far_object_min_depth = 0.0;
+  double far_object_min_depth = 6.0;
   double far_object_pixel_sigma = 0.5;
   RigidPointSetParams rigid;  ///< the objects' rigid sets (method.md section 4)
   CameraMotionParams camera;  ///< the background registration

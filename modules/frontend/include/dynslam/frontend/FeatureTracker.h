@@ -38,9 +38,9 @@ enum class ResidualGateRegion {
 /// docs/parameters.md; why the departures from the method, with their measured gains:
 /// docs/design.md, docs/notes/frontend.md (2026-11-28, front-end settings' history).
 struct FeatureTrackerParams {
-  int max_features = 150;
+  int max_features = 300;
   GridCornerParams corners;
-  int klt_window_px = 15;
+  int klt_window_px = 11;
   int klt_pyramid_levels = 3;
   /// The prediction (gyro or previous motion) leaves only the parallax and the objects' own
   /// motion to find, so fewer levels do. The backward pass of the forward-backward check starts
@@ -52,19 +52,19 @@ struct FeatureTrackerParams {
   /// A background patch that a walking person's silhouette passes over slides with it and can
   /// still pass the forward-backward check; its residual gives it away. Relative to the
   /// frame's median, so it follows the images' noise and contrast.
-  double max_klt_residual_ratio = 0;
+  double max_klt_residual_ratio = 3;
   /// Near non-rigid objects only: elsewhere the gate also drops good tracks whose appearance
   /// changes with the viewpoint, and tracks on the objects are the classification's to judge.
   ResidualGateRegion residual_gate_region = ResidualGateRegion::NearNonRigid;
   double residual_gate_margin_px = 20;
-  OcclusionEdgeParams occlusion_edge;  ///< OcclusionEdge.h
+  OcclusionEdgeParams occlusion_edge{11};  ///< OcclusionEdge.h
   /// Only an object mask's readings are the nearer surface: the silhouettes that move. Static
   /// edges shift their T-junctions by parallax only, and their corners are many of a static
   /// room's.
   bool occlusion_edge_objects_only = true;
   /// As a track moves by a fraction of a pixel its reading next to a depth edge can switch
   /// surfaces: the estimator leaves such readings out (Feature::depth_at_edge).
-  int depth_edge_radius_px = 0;
+  int depth_edge_radius_px = 5;
   FlowInit flow_init = FlowInit::Gyro;
   bool fundamental_ransac = true;
   /// Looser than VINS-Fusion's (~1.2 px at this focal length): tighter rejects many good tracks

@@ -48,7 +48,7 @@ struct RigidPointSetParams {
   /// blended with the prediction by their variances (the registration's from the depth noise
   /// and the members' spread); the translation then follows from the weighted centroids. Not
   /// the method (0: off). Needs depth_sigma_z2 > 0 and the camera's rotation in update().
-  double rotation_prior_sigma = 0.0;
+  double rotation_prior_sigma = 0.0087;
   /// px; > 0: the precise registration is refined with each point's noise along its ray (the
   /// depth's, as above) and across it (this pixel sigma at the point's depth), then refitted on
   /// the members within ray_gate_sigmas of that motion by the same noise (RayNoiseRegistration.h).
@@ -56,7 +56,7 @@ struct RigidPointSetParams {
   /// more often, each time with a new virtual centroid (docs/notes/frontend.md, 2026-11-28). Not
   /// the method (0: off, Kabsch on the RANSAC inliers). Needs depth_sigma_z2 > 0 and the focal
   /// length in update().
-  double pixel_sigma_px = 0.0;
+  double pixel_sigma_px = 0.3;
   double ray_gate_sigmas = 3.5;
 };
 
