@@ -36,6 +36,11 @@ void checkRulesBetweenKeys(const FeatureTrackerParams& p) {
           p.max_klt_residual_ratio, "0 (off) or >= 1");
 }
 
+/// KLT's termination, per pyramid level: OpenCV's and VINS-Fusion's 30 iterations or an update
+/// under 0.01 px (0.001 px changed nothing: docs/notes/estimator.md).
+constexpr int kKltMaxIterations = 30;
+constexpr double kKltEpsilonPx = 0.01;
+
 /// KLT needs the whole window inside the image to trust a match (VINS-Fusion keeps 1 px).
 bool insideImage(const cv::Point2f& p, cv::Size size) {
   return p.x >= 1 && p.y >= 1 && p.x < size.width - 1 && p.y < size.height - 1;
@@ -195,8 +200,8 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
 FeatureTracker::KltMatches FeatureTracker::kltBothWays(const core::Frame& frame) {
   const cv::Size size = frame.rgb.size();
   const cv::Size window(params_.klt_window_px, params_.klt_window_px);
-  const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
-                              params_.klt_max_iterations, params_.klt_epsilon);
+  const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, kKltMaxIterations,
+                              kKltEpsilonPx);
   KltMatches m;
   m.previous.resize(tracks_.size());
   for (size_t i = 0; i < tracks_.size(); ++i) m.previous[i] = tracks_[i].pixel;

@@ -53,8 +53,6 @@ void FeatureTrackingOptions::describe(core::OptionVisitor& v) {
   v.key("klt_predicted_levels", t.klt_predicted_levels, level,
         "KLT pyramid levels when the flow is predicted (gyro or previous motion), <= "
         "klt_pyramid_levels");
-  v.key("klt_max_iterations", t.klt_max_iterations, atLeast1, "KLT iterations per pyramid level");
-  v.key("klt_epsilon", t.klt_epsilon, positive, "px; KLT stops when an update moves less");
   v.key("max_fb_error_px", t.max_fb_error_px, positive,
         "px; forward-backward check: tracked back, a point must land this close");
   v.key("max_klt_residual_ratio", t.max_klt_residual_ratio, off,

@@ -77,7 +77,7 @@ TEST(FeatureTrackingStage, EveryKeyIsWrittenWithAComment) {
   mrpt::config::CConfigFileMemory ini;
   options.saveToConfigFile(ini, "FeatureTracking");
   const auto keys = core::knownKeys(options);
-  EXPECT_EQ(keys.size(), 27u);
+  EXPECT_EQ(keys.size(), 25u);
   const std::string text = ini.getContent();
   std::istringstream lines(text);
   size_t commented = 0;

@@ -46,8 +46,6 @@ struct FeatureTrackerParams {
   /// motion to find, so fewer levels do. The backward pass of the forward-backward check starts
   /// at the point's previous pixel and uses the image alone.
   int klt_predicted_levels = 2;
-  int klt_max_iterations = 30;
-  double klt_epsilon = 0.01;
   double max_fb_error_px = 0.5;
   /// A background patch that a walking person's silhouette passes over slides with it and can
   /// still pass the forward-backward check; its residual gives it away. Relative to the
