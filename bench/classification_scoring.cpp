@@ -60,7 +60,7 @@ std::string missCause(const core::Frame& frame, const Truth& truth,
 /// it, `ownObject`: its object is the one its pixel shows.
 std::string falsePositiveCause(const core::Frame& frame, const core::ObjectGroundTruthRow* row,
                                const core::Feature& f, bool inMask, bool ownObject) {
-  const char* whose = f.object_id < 0                     ? "no object's"
+  const char* whose = f.object_id < 0                    ? "no object's"
                       : inMask && ownObject              ? "its own mask's"
                       : inMask                           ? "a mask's"
                       : inMaskBox(frame, f.pixel, false) ? "a depthless box's"
@@ -88,123 +88,161 @@ double trackingError(const core::Frame& frame, const Truth& truth, const Truth& 
   return cv::norm(predicted - lastPixel);
 }
 
+/// What one frame's features leave for the per-object tallies and the rigid sets.
+struct FrameCounts {
+  std::map<int, std::pair<size_t, size_t>> perObject;       // label -> features, Static ones
+  std::map<int, std::map<std::string, size_t>> missCauses;  // label -> cause -> features
+  std::map<std::int64_t, int> labelOfFeature;
+  std::map<std::int64_t, cv::Point2f> pixels;
+};
+
+/// Whether a track's mask holds a pixel this frame (else its features are carried over).
+bool inMaskOf(const std::vector<frontend::ObjectRegion>& regions, int trackId,
+              const cv::Point2f& pixel) {
+  const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
+  for (const auto& r : regions)
+    if (r.object_id == trackId && r.roi.contains(px) &&
+        r.mask.at<uint8_t>(px.y - r.roi.y, px.x - r.roi.x) != 0)
+      return true;
+  return false;
+}
+
+/// trackingErrorPx and backgroundFlowRatio of feature `f` (object `row`, nullptr: background).
+void addTrackingError(ClassificationScore& score, const core::Frame& frame, const Truth& truth,
+                      const Truth& previous, const core::ObjectGroundTruthRow* row,
+                      const core::Feature& f) {
+  const auto last = score.lastPixel.find(f.id);
+  if (last == score.lastPixel.end()) return;
+  cv::Point2f truePrevious;
+  const double e = trackingError(frame, truth, previous, row, f, last->second, &truePrevious);
+  if (e < 0) return;
+  score
+      .trackingErrorPx[!row          ? "background"
+                       : row->moving ? "moving " + row->category
+                                     : "non-moving " + row->category]
+      .push_back(e);
+  const cv::Point2f tracked = f.pixel - last->second, truly = f.pixel - truePrevious;
+  if (!row && !f.depth_at_edge && truly.dot(truly) >= 1.0f)
+    score.backgroundFlowRatio[f.depth < ClassificationScore::kNearFlowDepth ? 0 : 1].push_back(
+        double(tracked.dot(truly)) / double(truly.dot(truly)));
+}
+
+/// The confusion counts of feature `f` and where its errors come from.
+void addFeatureClass(ClassificationScore& score, const core::Frame& frame, const Truth& truth,
+                     const std::vector<frontend::ObjectRegion>& regions,
+                     const std::map<int, bool>& matchedNow, const core::Feature& f, int label,
+                     FrameCounts& counts) {
+  const auto* row = label ? rowOf(truth.objects, label) : nullptr;
+  const bool truthDynamic = row && row->moving;
+  const bool predicted = f.feature_class != core::FeatureClass::Static;
+  // Whether the feature's object is the track whose detection shows this pixel's object.
+  const auto owner = score.trackTruth.find(f.object_id);
+  const bool ownTrack = row && owner != score.trackTruth.end() && owner->second == label;
+  score.tp += truthDynamic && predicted;
+  score.fp += !truthDynamic && predicted;
+  score.fn += truthDynamic && !predicted;
+  score.tn += !truthDynamic && !predicted;
+  if (!truthDynamic && predicted) {
+    ++(row ? score.fpNonMovingObject : score.fpBackground);
+    ++score.falsePositives[falsePositiveCause(frame, row, f,
+                                              inMaskOf(regions, f.object_id, f.pixel), ownTrack)];
+  }
+  if (f.depth > 0) {
+    score.tpDepth += truthDynamic && predicted;
+    score.fpDepth += !truthDynamic && predicted;
+    score.fnDepth += truthDynamic && !predicted;
+    score.tnDepth += !truthDynamic && !predicted;
+  }
+  if (truthDynamic && !predicted) ++(f.object_id < 0 ? score.fnNoObject : score.fnJudgedStatic);
+  if (truthDynamic && !predicted)
+    ++(f.depth > 0 ? score.depthMisses : score.depthlessMisses)[missCause(frame, truth, *row, f)];
+  if (row && !row->moving && predicted) {
+    const auto matched = matchedNow.find(f.object_id);
+    const char* cause =
+        f.object_id < 0                                              ? "no track"
+        : ownTrack && matched != matchedNow.end() && matched->second ? "own track (matched)"
+        : ownTrack                                                   ? "own track (coasting)"
+        : inMaskOf(regions, f.object_id, f.pixel)                    ? "another object's mask"
+                                                  : "another object's carried membership";
+    ++counts.missCauses[label][cause];
+  }
+  if (row) {
+    ++counts.perObject[label].first;
+    counts.perObject[label].second += !predicted;
+  }
+}
+
+/// Each object seen with >= 3 features: static or dynamic by most of its features.
+void tallyObjects(ClassificationScore& score, const Truth& truth, const FrameCounts& counts) {
+  for (const auto& [label, n] : counts.perObject) {
+    if (n.first < 3) continue;
+    const auto* row = rowOf(truth.objects, label);
+    const bool isStatic = 2 * n.second >= n.first;
+    auto& tally = row->moving ? score.moving[row->category] : score.nonMoving[row->category];
+    ++tally.first;
+    tally.second += row->moving ? !isStatic : isStatic;
+    if (!row->moving && !isStatic) {
+      const auto& causes = counts.missCauses.at(label);
+      const auto top = std::max_element(causes.begin(), causes.end(),
+                                        [](auto& a, auto& b) { return a.second < b.second; });
+      ++score.nonMovingMisses[row->category][top->first];
+    }
+  }
+}
+
+/// The rigid sets' motions against their objects' true ones.
+void addRigidSets(ClassificationScore& score, const core::Frame& frame, const Truth& truth,
+                  const Truth& previous, const std::map<std::int64_t, int>& labelOfFeature) {
+  for (const auto& s : frame.rigid_sets) {
+    std::map<int, int> votes;
+    for (auto id : s.members) {
+      const auto l = labelOfFeature.find(id);
+      ++votes[l != labelOfFeature.end() ? l->second : 0];
+    }
+    const auto best = std::max_element(votes.begin(), votes.end(),
+                                       [](auto& a, auto& b) { return a.second < b.second; });
+    const auto* now = best->first ? rowOf(truth.objects, best->first) : nullptr;
+    const auto* before = best->first ? rowOf(previous.objects, best->first) : nullptr;
+    if (!now || !before || !now->moving) {
+      ++score.rigidSetsUnmatched;
+      continue;
+    }
+    frontend::RigidMotion M{s.R, s.t};
+    const Eigen::Isometry3d A =
+        truth.T_world_camera * M.isometry() * previous.T_world_camera.inverse();
+    const Eigen::Isometry3d Agt = now->T_world_object * before->T_world_object.inverse();
+    const Eigen::Vector3d c =
+        previous.T_world_camera * (s.R.transpose() * (s.virtual_centroid - s.t));
+    score.rotErrDeg[now->category].push_back(
+        frontend::rotationAngleDeg(A.linear().transpose() * Agt.linear()));
+    score.transErrM[now->category].push_back((A * c - Agt * c).norm());
+  }
+}
+
 }  // namespace
 
-void ClassificationScore::add(const core::Frame& frame, const Truth& truth,
-                              const Truth* previous) {
+void ClassificationScore::add(const core::Frame& frame, const Truth& truth, const Truth* previous) {
   std::map<int, bool> matchedNow;  // track id -> matched a detection this frame
-  // Whether a track's mask holds a pixel this frame (else its features are carried over).
-  const auto regions = frontend::objectRegions(frame);
-  const auto inMaskOf = [&regions](int trackId, const cv::Point2f& pixel) {
-    const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
-    for (const auto& r : regions)
-      if (r.object_id == trackId && r.roi.contains(px) &&
-          r.mask.at<uint8_t>(px.y - r.roi.y, px.x - r.roi.x) != 0)
-        return true;
-    return false;
-  };
   for (const auto& t : frame.tracks) {
     matchedNow[t.id] = t.detection >= 0;
     if (t.detection >= 0 && size_t(t.detection) < frame.detections.size() &&
         frame.detections[size_t(t.detection)].truth_id >= 0)
       trackTruth[t.id] = frame.detections[size_t(t.detection)].truth_id;
   }
-  std::map<int, std::pair<size_t, size_t>> perObject;  // label -> features, Static ones
-  std::map<int, std::map<std::string, size_t>> missCauses;  // label -> cause -> features
-  std::map<std::int64_t, int> labelOfFeature;
-  std::map<std::int64_t, cv::Point2f> pixels;
+  const auto regions = frontend::objectRegions(frame);
+  FrameCounts counts;
   for (const auto& f : frame.features) {
     const int label = labelAt(truth.labels, f.pixel);
-    labelOfFeature[f.id] = label;
-    pixels[f.id] = f.pixel;
-    const auto* row = label ? rowOf(truth.objects, label) : nullptr;
-    cv::Point2f truePrevious;
-    if (const auto last = lastPixel.find(f.id); previous && last != lastPixel.end())
-      if (const double e =
-              trackingError(frame, truth, *previous, row, f, last->second, &truePrevious);
-          e >= 0) {
-        trackingErrorPx[!row ? "background"
-                        : row->moving ? "moving " + row->category
-                                      : "non-moving " + row->category]
-            .push_back(e);
-        const cv::Point2f tracked = f.pixel - last->second, truly = f.pixel - truePrevious;
-        if (!row && !f.depth_at_edge && truly.dot(truly) >= 1.0f)
-          backgroundFlowRatio[f.depth < kNearFlowDepth ? 0 : 1].push_back(
-              double(tracked.dot(truly)) / double(truly.dot(truly)));
-      }
-    const bool truthDynamic = row && row->moving;
-    const bool predicted = f.feature_class != core::FeatureClass::Static;
-    // Whether the feature's object is the track whose detection shows this pixel's object.
-    const auto owner = trackTruth.find(f.object_id);
-    const bool ownTrack = row && owner != trackTruth.end() && owner->second == label;
-    tp += truthDynamic && predicted;
-    fp += !truthDynamic && predicted;
-    fn += truthDynamic && !predicted;
-    tn += !truthDynamic && !predicted;
-    if (!truthDynamic && predicted) {
-      ++(row ? fpNonMovingObject : fpBackground);
-      ++falsePositives[falsePositiveCause(frame, row, f, inMaskOf(f.object_id, f.pixel), ownTrack)];
-    }
-    if (f.depth > 0) {
-      tpDepth += truthDynamic && predicted;
-      fpDepth += !truthDynamic && predicted;
-      fnDepth += truthDynamic && !predicted;
-      tnDepth += !truthDynamic && !predicted;
-    }
-    if (truthDynamic && !predicted) ++(f.object_id < 0 ? fnNoObject : fnJudgedStatic);
-    if (truthDynamic && !predicted)
-      ++(f.depth > 0 ? depthMisses : depthlessMisses)[missCause(frame, truth, *row, f)];
-    if (row && !row->moving && predicted) {
-      const char* cause = f.object_id < 0                       ? "no track"
-                          : ownTrack && matchedNow[f.object_id] ? "own track (matched)"
-                          : ownTrack                            ? "own track (coasting)"
-                          : inMaskOf(f.object_id, f.pixel)      ? "another object's mask"
-                                                                : "another object's carried membership";
-      ++missCauses[label][cause];
-    }
-    if (row) {
-      ++perObject[label].first;
-      perObject[label].second += !predicted;
-    }
+    counts.labelOfFeature[f.id] = label;
+    counts.pixels[f.id] = f.pixel;
+    if (previous)
+      addTrackingError(*this, frame, truth, *previous,
+                       label ? rowOf(truth.objects, label) : nullptr, f);
+    addFeatureClass(*this, frame, truth, regions, matchedNow, f, label, counts);
   }
-  for (const auto& [label, counts] : perObject) {
-    if (counts.first < 3) continue;
-    const auto* row = rowOf(truth.objects, label);
-    const bool isStatic = 2 * counts.second >= counts.first;
-    auto& tally = row->moving ? moving[row->category] : nonMoving[row->category];
-    ++tally.first;
-    tally.second += row->moving ? !isStatic : isStatic;
-    if (!row->moving && !isStatic) {
-      const auto& causes = missCauses[label];
-      const auto top = std::max_element(causes.begin(), causes.end(),
-                                        [](auto& a, auto& b) { return a.second < b.second; });
-      ++nonMovingMisses[row->category][top->first];
-    }
-  }
-  lastPixel = std::move(pixels);
-  if (!previous) return;
-  for (const auto& s : frame.rigid_sets) {
-    std::map<int, int> votes;
-    for (auto id : s.members) ++votes[labelOfFeature.count(id) ? labelOfFeature[id] : 0];
-    const auto best = std::max_element(votes.begin(), votes.end(), [](auto& a, auto& b) {
-      return a.second < b.second;
-    });
-    const auto* now = best->first ? rowOf(truth.objects, best->first) : nullptr;
-    const auto* before = best->first ? rowOf(previous->objects, best->first) : nullptr;
-    if (!now || !before || !now->moving) {
-      ++rigidSetsUnmatched;
-      continue;
-    }
-    frontend::RigidMotion M{s.R, s.t};
-    const Eigen::Isometry3d A =
-        truth.T_world_camera * M.isometry() * previous->T_world_camera.inverse();
-    const Eigen::Isometry3d Agt = now->T_world_object * before->T_world_object.inverse();
-    const Eigen::Vector3d c =
-        previous->T_world_camera * (s.R.transpose() * (s.virtual_centroid - s.t));
-    rotErrDeg[now->category].push_back(
-        frontend::rotationAngleDeg(A.linear().transpose() * Agt.linear()));
-    transErrM[now->category].push_back((A * c - Agt * c).norm());
-  }
+  tallyObjects(*this, truth, counts);
+  lastPixel = std::move(counts.pixels);
+  if (previous) addRigidSets(*this, frame, truth, *previous, counts.labelOfFeature);
 }
 
 }  // namespace dynslam::bench

@@ -83,24 +83,11 @@ void printRatio(const char* what, double value, double target, bool atLeast, con
               (atLeast ? value >= target : value <= target) ? "" : "  MISSED");
 }
 
-void run(const Settings& s) {
-  std::vector<std::string> overrides = s.overrides;
-  std::string rawlog = s.rawlog;
-  std::optional<core::ObjectGroundTruthIndex> objects;
-  core::Trajectory cameras;
-  if (!s.sim.empty()) {
-    rawlog = (fs::path(s.sim) / "sim.rawlog").string();
-    const std::string objectsPath = (fs::path(s.sim) / "objects.txt").string();
-    overrides.insert(overrides.begin(), "Detection.objects=" + objectsPath);
-    objects.emplace(core::readObjectGroundTruth(objectsPath));
-    cameras = core::readTum((fs::path(s.sim) / "groundtruth.tum").string());
-  }
-  const auto cfg = core::IniConfig::fromFile(s.config, overrides);
+/// The stages of the ini's [pipeline], configured; the KLT stand-in (a null stage) in place of
+/// FeatureTracking when `standIn`.
+std::vector<StageSlot> makeStages(const core::IniConfig& cfg, bool standIn) {
   core::StageRegistry registry;
   runner::registerBuiltinStages(registry);
-  const bool standIn =
-      s.features == "klt" || (s.features.empty() && !registry.contains("FeatureTracking"));
-
   std::vector<StageSlot> stages;
   for (const auto& e : core::pipelineStageEntries(cfg)) {
     StageSlot slot{e.entry, nullptr, {}};
@@ -112,11 +99,33 @@ void run(const Settings& s) {
     }
     stages.push_back(std::move(slot));
   }
-  io::SensorSyncOptions syncOptions;
-  core::loadOptionsStrict(syncOptions, cfg, io::SensorSync::kSection);
-  io::FrameReader reader(rawlog, syncOptions);
-  bench::KltStandIn klt;
+  return stages;
+}
 
+/// The simulator's truth (--sim): objects.txt, the camera poses and each frame's labels.
+struct SimTruth {
+  std::string dir;
+  core::ObjectGroundTruthIndex objects;
+  core::Trajectory cameras;
+
+  bench::Truth frame(size_t index) const {
+    char name[32];
+    std::snprintf(name, sizeof name, "%06zu.png", index);
+    bench::Truth t;
+    const std::string path = (fs::path(dir) / "labels" / name).string();
+    t.labels = cv::imread(path, cv::IMREAD_UNCHANGED);
+    if (t.labels.empty() || t.labels.type() != CV_16UC1)
+      throw std::runtime_error("cannot read the 16-bit label image '" + path + "'");
+    t.objects = objects.byFrame(index);
+    if (index >= cameras.size())
+      throw std::runtime_error("groundtruth.tum has no pose for frame " + std::to_string(index));
+    t.T_world_camera = cameras[index].T_world_body;
+    return t;
+  }
+};
+
+/// What the run counts, frame by frame.
+struct Tally {
   bench::ClassificationScore score;
   std::optional<bench::Truth> previous;
   std::map<std::int64_t, int> trackLength;
@@ -126,53 +135,21 @@ void run(const Settings& s) {
   // --per-frame: where the static set is contaminated (features of moving objects taken for
   // Static feed the estimator in remove mode) and where moving is over-called.
   std::ofstream perFrame;
-  if (!s.per_frame.empty()) {
-    perFrame.open(s.per_frame, std::ios::trunc);
-    perFrame << "frame,t_s,static,static_on_moving,dynamic,dynamic_on_still\n";
-    if (!perFrame) throw std::runtime_error("cannot write --per-frame '" + s.per_frame + "'");
-  }
-  while (!(s.max_frames >= 0 && long(frames) >= s.max_frames)) {
-    std::optional<core::Frame> next = reader.next();
-    if (!next) break;
-    core::Frame& frame = *next;
-    std::optional<bench::Truth> truth;
-    if (objects) {
-      char name[32];
-      std::snprintf(name, sizeof name, "%06zu.png", frame.index);
-      bench::Truth t;
-      const std::string path = (fs::path(s.sim) / "labels" / name).string();
-      t.labels = cv::imread(path, cv::IMREAD_UNCHANGED);
-      if (t.labels.empty() || t.labels.type() != CV_16UC1)
-        throw std::runtime_error("cannot read the 16-bit label image '" + path + "'");
-      t.objects = objects->byFrame(frame.index);
-      if (frame.index >= cameras.size())
-        throw std::runtime_error("groundtruth.tum has no pose for frame " +
-                                 std::to_string(frame.index));
-      t.T_world_camera = cameras[frame.index].T_world_body;
-      truth = std::move(t);
-    }
-    for (auto& slot : stages) {
-      if (truth && s.masks == "truth" && slot.name.rfind("DynamicClassification", 0) == 0)
-        useTrueMasks(frame, truth->labels);
-      const auto t0 = std::chrono::steady_clock::now();
-      if (slot.stage)
-        slot.stage->process(frame);
-      else
-        klt.process(frame);
-      slot.ms.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    }
-    // The camera motion the classifier removed, against the ground truth.
+
+  /// The camera motion the classifier removed, against the ground truth.
+  void addCameraMotion(const std::vector<StageSlot>& stages, const bench::Truth& truth) {
     for (const auto& slot : stages)
       if (const auto* dc =
               dynamic_cast<const frontend::DynamicClassificationStage*>(slot.stage.get());
-          dc && truth && previous && frames > 0) {
-        const Eigen::Isometry3d gt = truth->T_world_camera.inverse() * previous->T_world_camera;
+          dc && previous && frames > 0) {
+        const Eigen::Isometry3d gt = truth.T_world_camera.inverse() * previous->T_world_camera;
         const auto& e = dc->classifier()->lastCameraMotion();
         cameraRotErr.push_back(frontend::rotationAngleDeg(e.motion.R.transpose() * gt.linear()));
         cameraTransErr.push_back((e.motion.t - gt.translation()).norm());
       }
-    ++frames;
+  }
+
+  void addFeatures(const core::Frame& frame) {
     for (const auto& f : frame.features) {
       ++features;
       staticFeatures += f.feature_class == core::FeatureClass::Static;
@@ -183,104 +160,137 @@ void run(const Settings& s) {
       withDepth += f.depth > 0;
       trackLength[f.id] = std::max(trackLength[f.id], f.track_length);
     }
-    if (truth) {
-      const bool consecutive = previous && frames > 1;
-      const bench::ClassificationScore before = score;
-      score.add(frame, *truth, consecutive ? &*previous : nullptr);
-      if (perFrame.is_open())
-        perFrame << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ','
-                 << (score.tn + score.fn) - (before.tn + before.fn) << ',' << score.fn - before.fn
-                 << ',' << (score.tp + score.fp) - (before.tp + before.fp) << ','
-                 << score.fp - before.fp << '\n';
-      previous = std::move(truth);
-    }
-    if (frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", frames);
   }
-  for (auto& slot : stages)
-    if (slot.stage) slot.stage->finish();
 
+  void addScore(const core::Frame& frame, bench::Truth truth) {
+    const bool consecutive = previous && frames > 1;
+    const bench::ClassificationScore before = score;
+    score.add(frame, truth, consecutive ? &*previous : nullptr);
+    if (perFrame.is_open())
+      perFrame << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ','
+               << (score.tn + score.fn) - (before.tn + before.fn) << ',' << score.fn - before.fn
+               << ',' << (score.tp + score.fp) - (before.tp + before.fp) << ','
+               << score.fp - before.fp << '\n';
+    previous = std::move(truth);
+  }
+};
+
+/// One frame through the stages (timed), --masks truth applied before the classification.
+void processFrame(core::Frame& frame, std::vector<StageSlot>& stages, bench::KltStandIn& klt,
+                  const std::optional<bench::Truth>& truth, bool trueMasks) {
+  for (auto& slot : stages) {
+    if (truth && trueMasks && slot.name.rfind("DynamicClassification", 0) == 0)
+      useTrueMasks(frame, truth->labels);
+    const auto t0 = std::chrono::steady_clock::now();
+    if (slot.stage)
+      slot.stage->process(frame);
+    else
+      klt.process(frame);
+    slot.ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+}
+
+/// The dynamic class's scores and where its errors come from.
+void printClassScores(const bench::ClassificationScore& score) {
+  std::printf(
+      "dynamic class  TP %zu  FP %zu (%zu background, %zu on non-moving objects)  FN %zu "
+      "(%zu on no object, %zu on objects judged static)  TN %zu\n",
+      score.tp, score.fp, score.fpBackground, score.fpNonMovingObject, score.fn, score.fnNoObject,
+      score.fnJudgedStatic, score.tn);
+  printRatio("dynamic-class precision", score.precision(), 0.95, true, "");
+  printRatio("dynamic-class recall", score.recall(), 0.90, true, "");
+  std::printf("%-44s precision %.4f, recall %.4f (TP %zu FP %zu FN %zu TN %zu)\n",
+              "  features with depth only:", score.precisionWithDepth(), score.recallWithDepth(),
+              score.tpDepth, score.fpDepth, score.fnDepth, score.tnDepth);
+  for (const auto& [misses, title] :
+       {std::pair{&score.depthMisses, "with"}, std::pair{&score.depthlessMisses, "without"}}) {
+    if (misses->empty()) continue;
+    std::printf("  false negatives %s depth, by object and place:\n", title);
+    for (const auto& [cause, n] : *misses) std::printf("    %-60s %zu\n", cause.c_str(), n);
+  }
+  if (!score.falsePositives.empty()) {
+    std::printf("%-44s\n", "  false positives, by what the pixel shows and whose feature:");
+    for (const auto& [cause, n] : score.falsePositives)
+      std::printf("    %-60s %zu\n", cause.c_str(), n);
+  }
+}
+
+/// The objects' decisions: non-moving ones static, moving ones dynamic.
+void printObjectScores(const bench::ClassificationScore& score) {
+  for (const auto& [category, n] : score.nonMoving) {
+    const std::string what = "non-moving " + category + ": frames classified static";
+    printRatio(what.c_str(), n.first ? double(n.second) / n.first : 0, 0.90, true, "");
+    std::printf("%-44s (%zu object-frames with >= 3 features)\n", "", n.first);
+    std::string causes;
+    if (const auto misses = score.nonMovingMisses.find(category);
+        misses != score.nonMovingMisses.end())
+      for (const auto& [cause, count] : misses->second)
+        causes += (causes.empty() ? "" : ", ") + std::to_string(count) + " " + cause;
+    std::printf("%-44s frames judged moving, by cause: %s\n", "",
+                causes.empty() ? "none" : causes.c_str());
+  }
+  for (const auto& [category, n] : score.moving)
+    std::printf("%-44s %8.4g (%zu object-frames)\n",
+                ("moving " + category + ": frames classified dynamic").c_str(),
+                n.first ? double(n.second) / n.first : 0, n.first);
+}
+
+/// The rigid sets' motion errors, the tracking errors and the background flow's length.
+void printMotionScores(const bench::ClassificationScore& score) {
+  const std::map<std::string, std::pair<double, double>> targets{{"person", {2.0, 0.02}},
+                                                                 {"car", {0.5, 0.01}}};
+  for (const auto& [category, errs] : score.rotErrDeg) {
+    const auto target = targets.count(category) ? targets.at(category) : std::make_pair(2.0, 0.02);
+    std::printf("rigid sets on moving %ss: %zu set-frames\n", category.c_str(), errs.size());
+    printRatio(("  median rotation error, " + category).c_str(), dynslam::core::upperMedian(errs),
+               target.first, false, " deg");
+    printRatio(("  median translation error, " + category).c_str(),
+               dynslam::core::upperMedian(score.transErrM.at(category)), target.second, false,
+               " m");
+  }
+  std::printf("rigid sets not on a moving object: %zu\n", score.rigidSetsUnmatched);
+  std::printf("feature tracking error against the true motions, features with depth (px):\n");
+  for (const auto& [what, errs] : score.trackingErrorPx)
+    std::printf("  %-22s median %5.2f  p90 %6.2f  (%zu tracks)\n", what.c_str(),
+                dynslam::core::upperPercentile(errs, 0.5),
+                dynslam::core::upperPercentile(errs, 0.9), errs.size());
+  const auto& ratio = score.backgroundFlowRatio;
+  std::printf(
+      "background flow, tracked along the true one over the true one (median; flows "
+      ">= 1 px): nearer than %.0f m %.5f (%zu), farther %.5f (%zu)\n",
+      score.kNearFlowDepth, dynslam::core::upperMedian(ratio[0]), ratio[0].size(),
+      dynslam::core::upperMedian(ratio[1]), ratio[1].size());
+}
+
+void printReport(const Settings& s, const std::string& rawlog, const Tally& t, bool standIn,
+                 bool simulated, const std::vector<StageSlot>& stages) {
   double lengthSum = 0;
-  for (const auto& [id, n] : trackLength) lengthSum += n;
+  for (const auto& [id, n] : t.trackLength) lengthSum += n;
   std::printf("input          %s, %zu frames, config %s, masks %s, features %s\n", rawlog.c_str(),
-              frames, s.config.c_str(), s.masks.c_str(),
+              t.frames, s.config.c_str(), s.masks.c_str(),
               standIn ? "KLT stand-in" : "FeatureTracking stage");
   std::printf(
       "features       %.1f per frame (%.1f %% with depth), %zu tracks, mean track length %.1f "
       "frames\n",
-      frames ? double(features) / frames : 0, features ? 100.0 * withDepth / features : 0,
-      trackLength.size(), trackLength.empty() ? 0 : lengthSum / trackLength.size());
-  if (objects) {
+      t.frames ? double(t.features) / t.frames : 0,
+      t.features ? 100.0 * t.withDepth / t.features : 0, t.trackLength.size(),
+      t.trackLength.empty() ? 0 : lengthSum / t.trackLength.size());
+  if (simulated) {
     std::printf("camera motion  median error %.3f deg, %.1f mm per frame (p90 %.3f deg, %.1f mm)\n",
-                dynslam::core::upperMedian(cameraRotErr),
-                1000 * dynslam::core::upperMedian(cameraTransErr), percentile(cameraRotErr, 0.9),
-                1000 * percentile(cameraTransErr, 0.9));
-    std::printf(
-        "dynamic class  TP %zu  FP %zu (%zu background, %zu on non-moving objects)  FN %zu "
-        "(%zu on no object, %zu on objects judged static)  TN %zu\n",
-        score.tp, score.fp, score.fpBackground, score.fpNonMovingObject, score.fn, score.fnNoObject,
-        score.fnJudgedStatic, score.tn);
-    printRatio("dynamic-class precision", score.precision(), 0.95, true, "");
-    printRatio("dynamic-class recall", score.recall(), 0.90, true, "");
-    std::printf("%-44s precision %.4f, recall %.4f (TP %zu FP %zu FN %zu TN %zu)\n",
-                "  features with depth only:", score.precisionWithDepth(), score.recallWithDepth(),
-                score.tpDepth, score.fpDepth, score.fnDepth, score.tnDepth);
-    for (const auto& [misses, title] :
-         {std::pair{&score.depthMisses, "with"}, std::pair{&score.depthlessMisses, "without"}}) {
-      if (misses->empty()) continue;
-      std::printf("  false negatives %s depth, by object and place:\n", title);
-      for (const auto& [cause, n] : *misses) std::printf("    %-60s %zu\n", cause.c_str(), n);
-    }
-    if (!score.falsePositives.empty()) {
-      std::printf("%-44s\n", "  false positives, by what the pixel shows and whose feature:");
-      for (const auto& [cause, n] : score.falsePositives)
-        std::printf("    %-60s %zu\n", cause.c_str(), n);
-    }
-    for (const auto& [category, n] : score.nonMoving) {
-      const std::string what = "non-moving " + category + ": frames classified static";
-      printRatio(what.c_str(), n.first ? double(n.second) / n.first : 0, 0.90, true, "");
-      std::printf("%-44s (%zu object-frames with >= 3 features)\n", "", n.first);
-      std::string causes;
-      for (const auto& [cause, count] : score.nonMovingMisses[category])
-        causes += (causes.empty() ? "" : ", ") + std::to_string(count) + " " + cause;
-      std::printf("%-44s frames judged moving, by cause: %s\n", "",
-                  causes.empty() ? "none" : causes.c_str());
-    }
-    for (const auto& [category, n] : score.moving)
-      std::printf("%-44s %8.4g (%zu object-frames)\n",
-                  ("moving " + category + ": frames classified dynamic").c_str(),
-                  n.first ? double(n.second) / n.first : 0, n.first);
-    const std::map<std::string, std::pair<double, double>> targets{{"person", {2.0, 0.02}},
-                                                                   {"car", {0.5, 0.01}}};
-    for (const auto& [category, errs] : score.rotErrDeg) {
-      const auto target =
-          targets.count(category) ? targets.at(category) : std::make_pair(2.0, 0.02);
-      std::printf("rigid sets on moving %ss: %zu set-frames\n", category.c_str(), errs.size());
-      printRatio(("  median rotation error, " + category).c_str(), dynslam::core::upperMedian(errs),
-                 target.first, false, " deg");
-      printRatio(("  median translation error, " + category).c_str(),
-                 dynslam::core::upperMedian(score.transErrM.at(category)), target.second, false,
-                 " m");
-    }
-    std::printf("rigid sets not on a moving object: %zu\n", score.rigidSetsUnmatched);
-    std::printf("feature tracking error against the true motions, features with depth (px):\n");
-    for (const auto& [what, errs] : score.trackingErrorPx)
-      std::printf("  %-22s median %5.2f  p90 %6.2f  (%zu tracks)\n", what.c_str(),
-                  dynslam::core::upperPercentile(errs, 0.5),
-                  dynslam::core::upperPercentile(errs, 0.9), errs.size());
-    const auto& ratio = score.backgroundFlowRatio;
-    std::printf(
-        "background flow, tracked along the true one over the true one (median; flows "
-        ">= 1 px): nearer than %.0f m %.5f (%zu), farther %.5f (%zu)\n",
-        score.kNearFlowDepth,
-        dynslam::core::upperMedian(ratio[0]), ratio[0].size(), dynslam::core::upperMedian(ratio[1]),
-        ratio[1].size());
+                dynslam::core::upperMedian(t.cameraRotErr),
+                1000 * dynslam::core::upperMedian(t.cameraTransErr),
+                percentile(t.cameraRotErr, 0.9), 1000 * percentile(t.cameraTransErr, 0.9));
+    printClassScores(t.score);
+    printObjectScores(t.score);
+    printMotionScores(t.score);
   } else {
-    printRatio("features classified static", features ? double(staticFeatures) / features : 0, 0.98,
-               true, "");
+    printRatio("features classified static", t.features ? double(t.staticFeatures) / t.features : 0,
+               0.98, true, "");
     std::printf("%-44s %zu of %zu features on detected objects (%.1f %%), %.4f of them static\n",
-                "  of which on objects:", objectFeatures, features,
-                features ? 100.0 * objectFeatures / features : 0,
-                objectFeatures ? double(staticObjectFeatures) / objectFeatures : 0);
+                "  of which on objects:", t.objectFeatures, t.features,
+                t.features ? 100.0 * t.objectFeatures / t.features : 0,
+                t.objectFeatures ? double(t.staticObjectFeatures) / t.objectFeatures : 0);
   }
   for (const auto& slot : stages) {
     const double m = dynslam::core::upperMedian(slot.ms);
@@ -289,6 +299,53 @@ void run(const Settings& s) {
     else
       std::printf("%-44s %8.4g ms median per frame\n", slot.name.c_str(), m);
   }
+}
+
+void run(const Settings& s) {
+  std::vector<std::string> overrides = s.overrides;
+  std::string rawlog = s.rawlog;
+  std::optional<SimTruth> sim;
+  if (!s.sim.empty()) {
+    rawlog = (fs::path(s.sim) / "sim.rawlog").string();
+    const std::string objectsPath = (fs::path(s.sim) / "objects.txt").string();
+    overrides.insert(overrides.begin(), "Detection.objects=" + objectsPath);
+    sim.emplace(SimTruth{s.sim,
+                         core::ObjectGroundTruthIndex(core::readObjectGroundTruth(objectsPath)),
+                         core::readTum((fs::path(s.sim) / "groundtruth.tum").string())});
+  }
+  const auto cfg = core::IniConfig::fromFile(s.config, overrides);
+  core::StageRegistry registry;
+  runner::registerBuiltinStages(registry);
+  const bool standIn =
+      s.features == "klt" || (s.features.empty() && !registry.contains("FeatureTracking"));
+  std::vector<StageSlot> stages = makeStages(cfg, standIn);
+  io::SensorSyncOptions syncOptions;
+  core::loadOptionsStrict(syncOptions, cfg, io::SensorSync::kSection);
+  io::FrameReader reader(rawlog, syncOptions);
+  bench::KltStandIn klt;
+
+  Tally t;
+  if (!s.per_frame.empty()) {
+    t.perFrame.open(s.per_frame, std::ios::trunc);
+    t.perFrame << "frame,t_s,static,static_on_moving,dynamic,dynamic_on_still\n";
+    if (!t.perFrame) throw std::runtime_error("cannot write --per-frame '" + s.per_frame + "'");
+  }
+  while (!(s.max_frames >= 0 && long(t.frames) >= s.max_frames)) {
+    std::optional<core::Frame> next = reader.next();
+    if (!next) break;
+    core::Frame& frame = *next;
+    std::optional<bench::Truth> truth;
+    if (sim) truth = sim->frame(frame.index);
+    processFrame(frame, stages, klt, truth, s.masks == "truth");
+    if (truth) t.addCameraMotion(stages, *truth);
+    ++t.frames;
+    t.addFeatures(frame);
+    if (truth) t.addScore(frame, std::move(*truth));
+    if (t.frames % 500 == 0) std::fprintf(stderr, "  %zu frames\n", t.frames);
+  }
+  for (auto& slot : stages)
+    if (slot.stage) slot.stage->finish();
+  printReport(s, rawlog, t, standIn, sim.has_value(), stages);
 }
 
 }  // namespace

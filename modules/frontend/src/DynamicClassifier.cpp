@@ -8,6 +8,8 @@
 #include <dynslam/core/Median.h>
 #include <algorithm>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 namespace dynslam::frontend {
 namespace {
@@ -24,9 +26,7 @@ double objectSpeed(const std::vector<Eigen::Vector3d>& velocities, SpeedStatisti
 
 /// The middle half of `box` in width and height. The far objects' features near their box's
 /// edge are mostly the background around a small object or corners on its silhouette, which
-/// slide with it (bench-classification, outdoor_street_high seeds 1-3, far_object_min_depth =
-/// 10: the whole box recall +0.024 / +0.043 / +0.070 for precision -0.016 / -0.006 / -0.028; the
-/// middle half +0.013 / +0.027 / +0.034 for -0.001 / +0.006 / -0.009).
+/// slide with it (the whole box: docs/notes/frontend.md, 2026-11-28).
 cv::Rect centralHalf(const cv::Rect& box) {
   return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
 }
@@ -60,26 +60,86 @@ bool inStillObjectsBox(const std::vector<ObjectRegion>& regions, const DecisionO
   return false;
 }
 
+/// Whether `pixel` lies in the box of a mask or of a track.
+bool inAnyBox(const core::Frame& frame, const cv::Point2f& pixel) {
+  const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
+  for (const auto& m : frame.object_masks)
+    if (m.roi.contains(px)) return true;
+  for (const auto& t : frame.tracks)
+    if (t.box.contains(pixel)) return true;
+  return false;
+}
+
+/// `p` with the settings of its parts that follow from its own, after checking the rules a
+/// key's range cannot state.
+DynamicClassifierParams withDerivedSettings(DynamicClassifierParams p) {
+  const auto require = [](bool ok, const std::string& key, double value, const char* rule) {
+    if (!ok) throw std::invalid_argument(key + " = " + std::to_string(value) + ": must be " + rule);
+  };
+  require(p.depth_window % 2 == 1, "depth_window", p.depth_window, "odd");
+  require(p.moving_feature_max_speed > p.moving_feature_speed, "moving_feature_max_speed",
+          p.moving_feature_max_speed, "> moving_feature_speed");
+  p.camera.depth_sigma_z2 = p.rigid.depth_sigma_z2 = p.depth_sigma_z2;
+  // The rigid sets see the window-depth points: their noise is the reading's over ~0.8 w.
+  p.rigid.point_noise_reduction = 0.8 * std::max(1, p.depth_window);
+  return p;
+}
+
 }  // namespace
 
-std::vector<double> DynamicClassifier::decideFarObjects(
-    core::Frame& frame, const std::vector<const ObjectRegion*>& farOf,
-    std::map<int, bool>& dynamic) {
-  std::vector<double> speed(frame.features.size(), -1.0);
-  const size_t window = size_t(std::max(1, params_.speed_window));
+/// What one frame's phases hand on to the next (process()).
+struct DynamicClassifier::FrameWork {
+  /// Per feature of the frame, by index.
+  struct Feature {
+    const ObjectRegion* region = nullptr;  ///< its object's mask, or carried membership
+    const ObjectRegion* far = nullptr;     ///< the depthless box holding it (far objects)
+    bool has_point = false;
+    Eigen::Vector3d P;                      ///< camera frame
+    const Observation* previous = nullptr;  ///< the feature's point in the previous frame
+    double speed = -1;       ///< |scene flow| / time over the window, m/s; < 0: not measured
+    double speed_sigma = 0;  ///< its depth noise, m/s
+    bool carried_outside_box = false;  ///< membership carried over, pixel outside the track's box
+  };
+  std::size_t now = 0;                        ///< counter of this frame
+  std::size_t window = 1;                     ///< speed_window, at least 1
+  std::vector<ObjectRegion> regions;          ///< the masks' objects
+  std::map<int, const core::Track*> tracks;   ///< by track id
+  std::map<int, const ObjectRegion*> masked;  ///< tracks with a mask this frame
+  std::map<int, ObjectRegion> maskless;       ///< tracks seen this frame without a mask
+  std::vector<ObjectRegion> farBoxes;         ///< depthless boxes of unmasked tracks
+  std::vector<Feature> features;
+  std::vector<Eigen::Vector3d> bgPrev, bgCur;  ///< pairs outside every mask
+  std::vector<char> boxed;                     ///< ... of which inside some box
+  std::map<std::int64_t, int> nextObjectOf;
+  std::map<int, const ObjectRegion*> seen;                 ///< objects with features this frame
+  std::map<int, std::vector<Eigen::Vector3d>> velocities;  ///< per object, m/s
+  std::map<int, double> velocityVar;   ///< depth-noise variances, summed over the features
+  std::map<int, double> cameraVarSum;  ///< camera-translation variances, summed likewise
+  std::map<int, bool> dynamic;         ///< this frame's decisions
+  std::vector<double> farSpeed;        ///< decideFarObjects(), by feature index
+  std::map<int, std::set<std::int64_t>> members, tested;  ///< rigid sets, per object
+
+  bool isDynamic(int id) const {
+    const auto d = dynamic.find(id);
+    return d != dynamic.end() && d->second;
+  }
+};
+
+void DynamicClassifier::decideFarObjects(core::Frame& frame, FrameWork& w) {
+  w.farSpeed.assign(frame.features.size(), -1.0);
   const double zMin = params_.far_object_min_depth;
   const double f = 0.5 * (frame.intrinsics.fx + frame.intrinsics.fy);
   std::map<int, std::vector<double>> speeds;
   std::map<int, double> noiseVar;  // pixel and camera-translation variances, summed
   std::set<int> seen;
   for (size_t i = 0; i < frame.features.size(); ++i) {
-    if (!farOf[i]) continue;
-    const int id = farOf[i]->object_id;
+    if (!w.features[i].far) continue;
+    const int id = w.features[i].far->object_id;
     seen.insert(id);
     const auto h = pixelHistory_.find(frame.features[i].id);
     if (h == pixelHistory_.end()) continue;
     for (const auto& o : h->second) {  // oldest first: the longest span within the window
-      if (o.frame + window < frame_ || o.frame >= frame_ || !(frame.t > o.t)) continue;
+      if (o.frame + w.window < frame_ || o.frame >= frame_ || !(frame.t > o.t)) continue;
       const double dt = frame.t - o.t;
       const double v = farPointMinDisplacement(o.pixel, frame.features[i].pixel,
                                                cameraFromPast(o.frame), frame.intrinsics, zMin) /
@@ -88,7 +148,7 @@ std::vector<double> DynamicClassifier::decideFarObjects(
       const double pixel = params_.far_object_pixel_sigma * zMin / f / dt;
       const double var = 2 * pixel * pixel + cameraVarianceSince(o.frame) / (dt * dt);
       noiseVar[id] += var;
-      speed[i] = v - params_.speed_noise_sigmas * std::sqrt(var);
+      w.farSpeed[i] = v - params_.speed_noise_sigmas * std::sqrt(var);
       break;
     }
   }
@@ -98,7 +158,7 @@ std::vector<double> DynamicClassifier::decideFarObjects(
     auto v = speeds.find(id);
     s.features = v == speeds.end() ? 0 : int(v->second.size());
     // One feature suffices: the noise term grows as features are fewer (a car 20 m away holds
-    // one or two tracked corners: min_flow_features = 3 left 85 % of such objects undecided).
+    // one or two tracked corners, and min_flow_features left most such objects undecided).
     if (s.features >= 1) {
       const double n = double(s.features);
       s.speed = core::upperMedianInPlace(v->second);
@@ -108,11 +168,10 @@ std::vector<double> DynamicClassifier::decideFarObjects(
       s.dynamic = lastDecision(id).value_or(false);
     }
     remember(id, s.dynamic, frame.t);
-    dynamic[id] = s.dynamic;
+    w.dynamic[id] = s.dynamic;
     counts_.dynamic_objects += s.dynamic;
     frame.object_motions.push_back(s);
   }
-  return speed;
 }
 
 std::optional<bool> DynamicClassifier::lastDecision(int id) const {
@@ -133,20 +192,23 @@ void DynamicClassifier::forgetObjectsUnseenSince(double t) {
 
 const char* toString(CameraMotionSource source) {
   switch (source) {
-    case CameraMotionSource::Poses: return "poses";
-    case CameraMotionSource::ImuRotationRegistration: return "imu_rotation+registration";
-    case CameraMotionSource::Registration: return "registration";
-    case CameraMotionSource::ImuRotationConstantVelocity: return "imu_rotation+constant_velocity";
-    case CameraMotionSource::ConstantVelocity: return "constant_velocity";
+    case CameraMotionSource::Poses:
+      return "poses";
+    case CameraMotionSource::ImuRotationRegistration:
+      return "imu_rotation+registration";
+    case CameraMotionSource::Registration:
+      return "registration";
+    case CameraMotionSource::ImuRotationConstantVelocity:
+      return "imu_rotation+constant_velocity";
+    case CameraMotionSource::ConstantVelocity:
+      return "constant_velocity";
   }
   return "?";
 }
 
 DynamicClassifier::DynamicClassifier(DynamicClassifierParams params)
-    : params_(params), cameraEstimator_(params.camera, params.seed) {
-  // The rigid sets see the window-depth points: their noise is the reading's over ~0.8 w.
-  params_.rigid.point_noise_reduction = 0.8 * std::max(1, params_.depth_window);
-}
+    : params_(withDerivedSettings(params)),
+      cameraEstimator_(params_.camera, std::uint32_t(params_.seed)) {}
 
 double DynamicClassifier::cameraVarianceSince(std::size_t frame) const {
   double sum = 0;
@@ -163,293 +225,301 @@ Eigen::Isometry3d DynamicClassifier::cameraFromPast(std::size_t frame) const {
 
 void DynamicClassifier::process(core::Frame& frame) {
   ++counts_.frames;
-  const std::size_t now = frame_;
-  const auto regions = objectRegions(frame);
+  FrameWork w;
+  w.now = frame_;
+  w.window = size_t(std::max(1, params_.speed_window));
+  assignMembership(frame, w);
+  placeFeatures(frame, w);
+  estimateCameraMotion(frame, w);
+  measureObjectSpeeds(frame, w);
+  decideObjects(frame, w);
+  decideFarObjects(frame, w);
+  updateRigidSets(frame, w);
+  classifyFeatures(frame, w);
+  rememberFrame(frame, w);
+}
 
-  // 1. Membership and camera-frame points of this frame.
-  struct Current {
-    const ObjectRegion* region = nullptr;
-    bool has_point = false;
-    Eigen::Vector3d P;
-    const Observation* previous = nullptr;  ///< the feature's point in the previous frame
-    double speed = -1;  ///< |scene flow| / time over the window, m/s; < 0: not measured
-    double speed_sigma = 0;  ///< its depth noise, m/s
-    bool carried_outside_box = false;  ///< membership carried over, pixel outside the track's box
-  };
-  std::vector<Current> cur(frame.features.size());
-  std::vector<Eigen::Vector3d> bgPrev, bgCur;  // pairs outside every mask
-  std::vector<char> boxed;                     // ... of which inside some box
-  const auto inAnyBox = [&frame](const cv::Point2f& pixel) {
-    const cv::Point px(cvRound(pixel.x), cvRound(pixel.y));
-    for (const auto& m : frame.object_masks)
-      if (m.roi.contains(px)) return true;
-    for (const auto& t : frame.tracks)
-      if (t.box.contains(pixel)) return true;
-    return false;
-  };
-  std::map<int, const core::Track*> tracks;
-  for (const auto& t : frame.tracks) tracks[t.id] = &t;
-  std::map<int, ObjectRegion> maskless;  // tracks seen this frame without a mask
-  std::map<int, const ObjectRegion*> masked;  // tracks with a mask this frame
-  for (const auto& r : regions) masked.emplace(r.object_id, &r);
-  std::map<std::int64_t, int> nextObjectOf;
-  const bool windowed = params_.depth_window > 1 && !frame.depth.empty() &&
-                        frame.depth.type() == CV_32FC1;
-  std::vector<ObjectRegion> farBoxes;
+void DynamicClassifier::assignMembership(core::Frame& frame, FrameWork& w) {
+  w.regions = objectRegions(frame);
+  w.features.resize(frame.features.size());
+  for (const auto& t : frame.tracks) w.tracks[t.id] = &t;
+  for (const auto& r : w.regions) w.masked.emplace(r.object_id, &r);
   if (params_.far_object_min_depth > 0)
     for (auto& b : depthlessObjectBoxes(frame))
-      if (!masked.count(b.object_id)) farBoxes.push_back(std::move(b));
-  std::vector<const ObjectRegion*> farOf(frame.features.size(), nullptr);
-  std::vector<double> buf;
+      if (!w.masked.count(b.object_id)) w.farBoxes.push_back(std::move(b));
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
-    auto& c = cur[i];
-    c.region = regionAt(regions, f.pixel);
-    if (!c.region) {
-      // No mask holds it, but it was on a tracked object last frame and that track is still
-      // there: it stays with the object unless the object's mask says otherwise. A mask speaks
-      // only for the pixels of its box: outside it (the detector missed the object and the
-      // track coasts, or the box was cut short by a few pixels) membership carries over.
-      const auto last = objectOf_.find(f.id);
-      const auto mask = last != objectOf_.end() ? masked.find(last->second) : masked.end();
-      const bool contradicted =
-          mask != masked.end() &&
-          mask->second->roi.contains({cvRound(f.pixel.x), cvRound(f.pixel.y)});
-      if (last != objectOf_.end() && !contradicted) {
-        const auto t = tracks.find(last->second);
-        if (t != tracks.end()) {
-          c.region =
-              &maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model, {}, {}, 0.0})
-                   .first->second;
-          c.carried_outside_box = !t->second->box.contains(f.pixel);
-        }
-      }
-    }
+    auto& c = w.features[i];
+    c.region = regionAt(w.regions, f.pixel);
+    if (!c.region) c.region = carriedRegion(f, w, c.carried_outside_box);
     f.object_id = c.region ? c.region->object_id : -1;
-    if (c.region) nextObjectOf[f.id] = f.object_id;
+    if (c.region) w.nextObjectOf[f.id] = f.object_id;
     f.feature_class = core::FeatureClass::Static;
     if (!c.region && !(f.depth > 0))
-      for (const auto& b : farBoxes)
+      for (const auto& b : w.farBoxes)
         if (centralHalf(b.roi).contains({cvRound(f.pixel.x), cvRound(f.pixel.y)})) {
-          farOf[i] = &b;
+          c.far = &b;
           f.object_id = b.object_id;  // on the object, though not in a mask (none was made)
           break;
         }
+  }
+  counts_.features += frame.features.size();
+}
+
+const ObjectRegion* DynamicClassifier::carriedRegion(const core::Feature& f, FrameWork& w,
+                                                     bool& outsideBox) const {
+  // No mask holds it, but it was on a tracked object last frame and that track is still
+  // there: it stays with the object unless the object's mask says otherwise. A mask speaks
+  // only for the pixels of its box: outside it (the detector missed the object and the track
+  // coasts, or the box was cut short by a few pixels) membership carries over.
+  const auto last = objectOf_.find(f.id);
+  if (last == objectOf_.end()) return nullptr;
+  const auto mask = w.masked.find(last->second);
+  if (mask != w.masked.end() &&
+      mask->second->roi.contains({cvRound(f.pixel.x), cvRound(f.pixel.y)}))
+    return nullptr;
+  const auto t = w.tracks.find(last->second);
+  if (t == w.tracks.end()) return nullptr;
+  outsideBox = !t->second->box.contains(f.pixel);
+  return &w.maskless.try_emplace(t->first, ObjectRegion{t->first, t->second->model, {}, {}, 0.0})
+              .first->second;
+}
+
+void DynamicClassifier::placeFeatures(const core::Frame& frame, FrameWork& w) const {
+  const bool windowed =
+      params_.depth_window > 1 && !frame.depth.empty() && frame.depth.type() == CV_32FC1;
+  std::vector<double> buf;
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    const auto& f = frame.features[i];
+    auto& c = w.features[i];
     const float z = windowed ? windowDepth(frame.depth, f.pixel, params_.depth_window / 2,
-                                             params_.camera.depth_sigma_z2, buf)
+                                           params_.depth_sigma_z2, buf)
                              : f.depth;
     if (!(z > 0) || !(f.depth > 0)) continue;
     c.has_point = true;
     c.P = backProject(f.pixel, z, frame.intrinsics);
     const auto h = history_.find(f.id);
-    if (h != history_.end() && !h->second.empty() && h->second.back().frame + 1 == now)
+    if (h != history_.end() && !h->second.empty() && h->second.back().frame + 1 == w.now)
       c.previous = &h->second.back();
     if (!c.region && c.previous) {
-      bgPrev.push_back(c.previous->P);
-      bgCur.push_back(c.P);
-      boxed.push_back(params_.background_outside_boxes && inAnyBox(f.pixel));
+      w.bgPrev.push_back(c.previous->P);
+      w.bgCur.push_back(c.P);
+      w.boxed.push_back(params_.background_outside_boxes && inAnyBox(frame, f.pixel));
     }
   }
-  counts_.features += frame.features.size();
+}
 
-  // 2. The camera's motion since the previous frame, and the chain of poses for the window.
+void DynamicClassifier::estimateCameraMotion(const core::Frame& frame, FrameWork& w) {
   if (prevT_) {
-    const auto gyro = gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu,
-                                         frame.T_body_camera);
+    const auto gyro =
+        gyroCameraRotation(frame.imu, *prevT_, frame.t, frame.T_body_imu, frame.T_body_camera);
     // Only the pairs outside every box (background_outside_boxes; else none is boxed). Too few
-    // of them and CameraMotionEstimator's constant velocity stands in: the pairs inside boxes but
-    // outside masks, which this fell back to before, are the walkers' unmasked parts when
-    // people fill the view (indoor_people_low with injected faults: 2-2.5 cm per frame of
-    // false depth motion for five frames, a standing person read 0.24 m/s and turned dynamic).
-    size_t w = 0;
-    for (size_t i = 0; i < boxed.size(); ++i)
-      if (!boxed[i]) {
-        bgPrev[w] = bgPrev[i];
-        bgCur[w++] = bgCur[i];
+    // of them and CameraMotionEstimator's constant velocity stands in, not the pairs inside
+    // boxes but outside masks: those are the walkers' unmasked parts when people fill the view.
+    size_t k = 0;
+    for (size_t i = 0; i < w.boxed.size(); ++i)
+      if (!w.boxed[i]) {
+        w.bgPrev[k] = w.bgPrev[i];
+        w.bgCur[k++] = w.bgCur[i];
       }
-    bgPrev.resize(w);
-    bgCur.resize(w);
-    camera_ = cameraEstimator_.estimate(bgPrev, bgCur, gyro, prevPose_, frame.T_world_camera);
+    w.bgPrev.resize(k);
+    w.bgCur.resize(k);
+    camera_ = cameraEstimator_.estimate(w.bgPrev, w.bgCur, gyro, prevPose_, frame.T_world_camera);
     ++counts_.camera_sources[camera_.source];
-    odometry_.emplace_back(now, odometry_.back().second * camera_.motion.isometry().inverse());
-    cameraVar_.emplace_back(now, camera_.translation_sigma * camera_.translation_sigma);
+    odometry_.emplace_back(w.now, odometry_.back().second * camera_.motion.isometry().inverse());
+    cameraVar_.emplace_back(w.now, camera_.translation_sigma * camera_.translation_sigma);
   } else {
     camera_ = {};
-    odometry_.emplace_back(now, Eigen::Isometry3d::Identity());
+    odometry_.emplace_back(w.now, Eigen::Isometry3d::Identity());
   }
-  const size_t window = size_t(std::max(1, params_.speed_window));
-  while (!odometry_.empty() && odometry_.front().first + window < now) odometry_.pop_front();
-  while (!cameraVar_.empty() && cameraVar_.front().first + window < now) cameraVar_.pop_front();
+  while (!odometry_.empty() && odometry_.front().first + w.window < w.now) odometry_.pop_front();
+  while (!cameraVar_.empty() && cameraVar_.front().first + w.window < w.now) cameraVar_.pop_front();
+}
 
-  // 3. Each object's speed from its features' scene flow over the window.
-  std::map<int, std::vector<Eigen::Vector3d>> velocities;
-  std::map<int, double> velocityVar;    // depth-noise variances, summed over the features
-  std::map<int, double> cameraVarSum;   // camera-translation variances, summed likewise
-  std::map<int, const ObjectRegion*> seen;
+void DynamicClassifier::measureObjectSpeeds(const core::Frame& frame, FrameWork& w) {
   for (size_t i = 0; i < frame.features.size(); ++i) {
-    const auto& c = cur[i];
+    auto& c = w.features[i];
     if (!c.region) continue;
     ++counts_.object_features;
-    seen[c.region->object_id] = c.region;
+    w.seen[c.region->object_id] = c.region;
     if (!c.has_point) continue;
     const auto h = history_.find(frame.features[i].id);
     if (h == history_.end()) continue;
     for (const auto& o : h->second) {  // oldest first: the longest span within the window
-      if (o.frame + window < now || o.frame >= now || !(frame.t > o.t)) continue;
+      if (o.frame + w.window < w.now || o.frame >= w.now || !(frame.t > o.t)) continue;
       const Eigen::Vector3d F = sceneFlow(o.P, c.P, cameraFromPast(o.frame));
       const double dt = frame.t - o.t;
       const double speed = F.norm() / dt;
       // Variance of that velocity from the depth noise of both points (the window median
       // divides a reading's sigma by about sqrt(0.64 w^2)).
       const double reduce = 0.8 * std::max(1, params_.depth_window);
-      const double sp = params_.camera.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
-      const double sq = params_.camera.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
+      const double sp = params_.depth_sigma_z2 * o.P.z() * o.P.z() / reduce;
+      const double sq = params_.depth_sigma_z2 * c.P.z() * c.P.z() / reduce;
       const double var = (sp * sp + sq * sq) / (dt * dt);
       const double sigma = std::sqrt(var);
       // Faster than a person moves, beyond its noise: a depth jump (max_nonrigid_flow_speed).
       if (params_.max_nonrigid_flow_speed > 0 && c.region->model == core::MotionModel::NonRigid &&
           speed > params_.max_nonrigid_flow_speed + params_.speed_noise_sigmas * sigma)
         break;
-      velocities[c.region->object_id].push_back(F / dt);
-      cur[i].speed = speed;
-      cur[i].speed_sigma = sigma;
-      velocityVar[c.region->object_id] += var;
-      cameraVarSum[c.region->object_id] += cameraVarianceSince(o.frame) / (dt * dt);
+      w.velocities[c.region->object_id].push_back(F / dt);
+      c.speed = speed;
+      c.speed_sigma = sigma;
+      w.velocityVar[c.region->object_id] += var;
+      w.cameraVarSum[c.region->object_id] += cameraVarianceSince(o.frame) / (dt * dt);
       break;
     }
   }
-  // This frame's decisions and start_moving_frames' runs; objects_ holds the previous ones until
-  // all are made.
-  std::map<int, bool> dynamic;
+}
+
+void DynamicClassifier::decideObjects(core::Frame& frame, FrameWork& w) {
+  // objects_ holds the previous decisions and start_moving_frames' runs until all are made.
   std::map<int, int> movingRuns;
-  for (const auto& [id, region] : seen) {
+  for (const auto& [id, region] : w.seen) {
     core::ObjectMotionState s;
     s.object_id = id;
-    const auto v = velocities.find(id);
-    s.features = v == velocities.end() ? 0 : int(v->second.size());
+    const auto v = w.velocities.find(id);
+    s.features = v == w.velocities.end() ? 0 : int(v->second.size());
     if (s.features >= std::max(1, params_.min_flow_features)) {
       s.speed = objectSpeed(v->second, params_.speed_statistic);
       // The median of n velocities has about 1.25 sigma / sqrt(n) of depth noise (sigma: their
       // rms); the camera's error is common to all of them and does not average out.
       const double n = double(s.features);
-      const double noise =
-          std::sqrt(1.5625 * velocityVar[id] / n / n + cameraVarSum[id] / n);
+      const double noise = std::sqrt(1.5625 * w.velocityVar[id] / n / n + w.cameraVarSum[id] / n);
       const bool over = s.speed > params_.speed_threshold + params_.speed_noise_sigmas * noise;
       const auto before = objects_.find(id);
       const int run = over ? (before != objects_.end() ? before->second.moving_run : 0) + 1 : 0;
       movingRuns[id] = run;
       const bool wasStill = before != objects_.end() && !before->second.dynamic;
       s.dynamic = over && !(wasStill && run < params_.start_moving_frames);
+    } else if (const std::optional<bool> last = lastDecision(id)) {
+      s.dynamic = *last;
     } else {
-      if (const std::optional<bool> last = lastDecision(id)) {
-        s.dynamic = *last;
-      } else {
-        // A new track (the tracker may give an object a new id): its features' objects of the
-        // last frame vote; without votes it is not dynamic (no scene flow says it moves).
-        int votes = 0, dynamicVotes = 0;
-        for (size_t i = 0; i < frame.features.size(); ++i) {
-          if (!cur[i].region || cur[i].region->object_id != id) continue;
-          const auto before = objectOf_.find(frame.features[i].id);
-          if (before == objectOf_.end()) continue;
-          const std::optional<bool> decision = lastDecision(before->second);
-          if (!decision) continue;
-          ++votes;
-          dynamicVotes += *decision;
-        }
-        s.dynamic = votes > 0 && 2 * dynamicVotes >= votes;
-      }
+      s.dynamic = newTrackDecision(frame, id, w);
     }
-    dynamic[id] = s.dynamic;
+    w.dynamic[id] = s.dynamic;
     counts_.dynamic_objects += s.dynamic;
     frame.object_motions.push_back(s);
   }
-  for (const auto& [id, d] : dynamic) remember(id, d, frame.t);
+  for (const auto& [id, d] : w.dynamic) remember(id, d, frame.t);
   for (const auto& [id, run] : movingRuns) objects_[id].moving_run = run;
+}
 
-  const std::vector<double> farSpeed = decideFarObjects(frame, farOf, dynamic);
+bool DynamicClassifier::newTrackDecision(const core::Frame& frame, int id,
+                                         const FrameWork& w) const {
+  // The tracker may give an object a new id: its features' objects of the last frame vote;
+  // without votes it is not dynamic (no scene flow says it moves).
+  int votes = 0, dynamicVotes = 0;
+  for (size_t i = 0; i < frame.features.size(); ++i) {
+    if (!w.features[i].region || w.features[i].region->object_id != id) continue;
+    const auto before = objectOf_.find(frame.features[i].id);
+    if (before == objectOf_.end()) continue;
+    const std::optional<bool> decision = lastDecision(before->second);
+    if (!decision) continue;
+    ++votes;
+    dynamicVotes += *decision;
+  }
+  return votes > 0 && 2 * dynamicVotes >= votes;
+}
 
-  // 4. Rigid point sets of the dynamic objects, from the frame-to-frame pairs.
+void DynamicClassifier::updateRigidSets(core::Frame& frame, FrameWork& w) {
+  // From the frame-to-frame pairs of the dynamic objects.
   std::map<int, std::vector<PointPair>> pairs;
   for (size_t i = 0; i < frame.features.size(); ++i) {
-    const auto& c = cur[i];
-    if (c.region && c.previous && dynamic[c.region->object_id])
+    const auto& c = w.features[i];
+    if (c.region && c.previous && w.isDynamic(c.region->object_id))
       pairs[c.region->object_id].push_back({frame.features[i].id, c.previous->P, c.P});
   }
   for (auto it = sets_.begin(); it != sets_.end();)
-    it = (seen.count(it->first) && dynamic[it->first]) ? std::next(it) : sets_.erase(it);
-  std::map<int, std::set<std::int64_t>> members, tested;
+    it = (w.seen.count(it->first) && w.isDynamic(it->first)) ? std::next(it) : sets_.erase(it);
   for (const auto& [id, objectPairs] : pairs) {
-    auto set = sets_.try_emplace(id, params_.rigid, params_.seed + std::uint32_t(id)).first;
+    auto set =
+        sets_.try_emplace(id, params_.rigid, std::uint32_t(params_.seed) + std::uint32_t(id)).first;
     if (!set->second.update(objectPairs, camera_.motion.R,
                             0.5 * (frame.intrinsics.fx + frame.intrinsics.fy)))
       continue;
     frame.rigid_sets.push_back(set->second.toRigidSet(id));
     ++counts_.rigid_sets;
-    members[id].insert(set->second.members().begin(), set->second.members().end());
-    for (const auto& p : objectPairs) tested[id].insert(p.id);
+    w.members[id].insert(set->second.members().begin(), set->second.members().end());
+    for (const auto& p : objectPairs) w.tested[id].insert(p.id);
   }
+}
 
-  // 5. Classes.
+DynamicClassifier::Verdict DynamicClassifier::verdictOf(const core::Frame& frame, size_t i,
+                                                        const FrameWork& w) const {
+  const auto& f = frame.features[i];
+  const auto& c = w.features[i];
   const auto decisionOf = [this](int id) { return lastDecision(id); };
+  const auto* region = c.region;
+  const bool still = c.speed >= 0 && c.speed < params_.still_feature_speed;
+  const bool stillAndWasStatic =
+      still && (wasStatic_.count(f.id) > 0 ||
+                (params_.still_feature_in_still_box && region &&
+                 inStillObjectsBox(w.regions, decisionOf, region->object_id, f.pixel)));
+  const bool movingInStillObject =
+      region && !w.isDynamic(region->object_id) && params_.moving_feature_speed > 0 &&
+      c.speed - params_.speed_noise_sigmas * c.speed_sigma > params_.moving_feature_speed &&
+      c.speed < params_.moving_feature_max_speed;
+  const bool movingFar =
+      c.far && w.isDynamic(c.far->object_id) && w.farSpeed[i] > params_.speed_threshold;
+  if (movingInStillObject || movingFar) return Verdict::MovingOnItsOwn;
+  // unmeasured_feature_by_depth: no flow yet (a new corner), so the depth says whose it is.
+  const bool unmeasuredOfStill =
+      params_.unmeasured_feature_by_depth && region && c.has_point && c.speed < 0 &&
+      inStillObjectsBox(w.regions, decisionOf, region->object_id, f.pixel, c.P.z(), region->depth);
+  // still_above_feet_fraction: a walker's only still parts are its planted feet.
+  const bool stillAboveFeet =
+      params_.still_above_feet_fraction > 0 && still && region && !region->mask.empty() &&
+      region->model == core::MotionModel::NonRigid &&
+      f.pixel.y < region->roi.y + (1 - params_.still_above_feet_fraction) * region->roi.height;
+  // still_carried_outside_box: nothing but last frame's membership puts it on the object.
+  if (params_.still_carried_outside_box && still && c.carried_outside_box)
+    return Verdict::StillOffObject;
+  if (!region || !w.isDynamic(region->object_id) || stillAndWasStatic || unmeasuredOfStill ||
+      stillAboveFeet)
+    return Verdict::Static;
+  return Verdict::ByRigidSet;
+}
+
+void DynamicClassifier::classifyFeatures(core::Frame& frame, FrameWork& w) {
   std::unordered_set<std::int64_t> nextStatic;
   for (size_t i = 0; i < frame.features.size(); ++i) {
     auto& f = frame.features[i];
-    const auto* region = cur[i].region;
-    const bool still = cur[i].speed >= 0 && cur[i].speed < params_.still_feature_speed;
-    const bool stillAndWasStatic =
-        still && (wasStatic_.count(f.id) > 0 ||
-                  (params_.still_feature_in_still_box && region &&
-                   inStillObjectsBox(regions, decisionOf, region->object_id, f.pixel)));
-    const bool movingInStillObject = region && !dynamic[region->object_id] &&
-                                     params_.moving_feature_speed > 0 &&
-                                     cur[i].speed - params_.speed_noise_sigmas *
-                                                        cur[i].speed_sigma >
-                                         params_.moving_feature_speed &&
-                                     cur[i].speed < params_.moving_feature_max_speed;
-    const bool movingFar =
-        farOf[i] && dynamic[farOf[i]->object_id] && farSpeed[i] > params_.speed_threshold;
-    if (movingInStillObject || movingFar) {
-      f.feature_class = core::FeatureClass::NonRigid;
-      continue;
-    }
-    // unmeasured_feature_by_depth: no flow yet (a new corner), so the depth says whose it is.
-    const bool unmeasuredOfStill = params_.unmeasured_feature_by_depth && region &&
-                                   cur[i].has_point && cur[i].speed < 0 &&
-                                   inStillObjectsBox(regions, decisionOf, region->object_id,
-                                                     f.pixel, cur[i].P.z(), region->depth);
-    // still_above_feet_fraction: a walker's only still parts are its planted feet.
-    const bool stillAboveFeet =
-        params_.still_above_feet_fraction > 0 && still && region && !region->mask.empty() &&
-        region->model == core::MotionModel::NonRigid &&
-        f.pixel.y < region->roi.y + (1 - params_.still_above_feet_fraction) * region->roi.height;
-    // still_carried_outside_box: nothing but last frame's membership puts it on the object.
-    if (params_.still_carried_outside_box && still && cur[i].carried_outside_box) {
-      f.object_id = -1;
-      nextObjectOf.erase(f.id);
-      nextStatic.insert(f.id);
-      continue;  // Static, and off the object
-    }
-    if (!region || !dynamic[region->object_id] || stillAndWasStatic || unmeasuredOfStill ||
-        stillAboveFeet) {
-      nextStatic.insert(f.id);
-      continue;  // Static
-    }
-    const bool member = members[region->object_id].count(f.id) > 0;
-    if (region->model == core::MotionModel::Rigid) {
-      const bool rejected = tested[region->object_id].count(f.id) > 0 && !member;
-      f.feature_class = rejected ? core::FeatureClass::NonRigid : core::FeatureClass::Rigid;
-    } else {
-      f.feature_class = member ? core::FeatureClass::Rigid : core::FeatureClass::NonRigid;
+    const auto* region = w.features[i].region;
+    switch (verdictOf(frame, i, w)) {
+      case Verdict::MovingOnItsOwn:
+        f.feature_class = core::FeatureClass::NonRigid;
+        break;
+      case Verdict::StillOffObject:
+        f.object_id = -1;
+        w.nextObjectOf.erase(f.id);
+        nextStatic.insert(f.id);
+        break;
+      case Verdict::Static:
+        nextStatic.insert(f.id);
+        break;
+      case Verdict::ByRigidSet: {
+        const bool member = w.members[region->object_id].count(f.id) > 0;
+        const bool rejected = w.tested[region->object_id].count(f.id) > 0 && !member;
+        if (region->model == core::MotionModel::Rigid)
+          f.feature_class = rejected ? core::FeatureClass::NonRigid : core::FeatureClass::Rigid;
+        else
+          f.feature_class = member ? core::FeatureClass::Rigid : core::FeatureClass::NonRigid;
+        break;
+      }
     }
   }
+  wasStatic_ = std::move(nextStatic);
+}
 
-  // 6. Remember this frame's points; forget features no longer tracked.
+void DynamicClassifier::rememberFrame(const core::Frame& frame, FrameWork& w) {
+  // This frame's points; features no longer tracked are forgotten.
   std::unordered_map<std::int64_t, std::deque<Observation>> next;
   next.reserve(frame.features.size());
   for (size_t i = 0; i < frame.features.size(); ++i) {
     const std::int64_t id = frame.features[i].id;
-    if (cur[i].has_point)
-      next.emplace(id, withLatest(history_, id, window, now, Observation{now, frame.t, cur[i].P}));
+    if (w.features[i].has_point)
+      next.emplace(id, withLatest(history_, id, w.window, w.now,
+                                  Observation{w.now, frame.t, w.features[i].P}));
   }
   history_ = std::move(next);
   if (params_.far_object_min_depth > 0) {
@@ -457,12 +527,11 @@ void DynamicClassifier::process(core::Frame& frame) {
     pixels.reserve(frame.features.size());
     for (const auto& f : frame.features)
       if (!(f.depth > 0))  // only depthless features are measured by their pixels
-        pixels.emplace(f.id, withLatest(pixelHistory_, f.id, window, now,
-                                        PixelObservation{now, frame.t, f.pixel}));
+        pixels.emplace(f.id, withLatest(pixelHistory_, f.id, w.window, w.now,
+                                        PixelObservation{w.now, frame.t, f.pixel}));
     pixelHistory_ = std::move(pixels);
   }
-  objectOf_ = std::move(nextObjectOf);
-  wasStatic_ = std::move(nextStatic);
+  objectOf_ = std::move(w.nextObjectOf);
   forgetObjectsUnseenSince(frame.t - kObjectMemoryS);
   prevT_ = frame.t;
   prevPose_ = frame.T_world_camera;

@@ -25,42 +25,21 @@ void require(bool ok, const std::string& key, double value, const char* rule) {
   if (!ok) throw std::invalid_argument(key + " = " + std::to_string(value) + ": must be " + rule);
 }
 
-void validate(const FeatureTrackerParams& p) {
-  const auto& c = p.corners;
-  require(p.max_features >= 1, "max_features", p.max_features, ">= 1");
-  require(c.min_distance_px >= 1, "min_distance_px", c.min_distance_px, ">= 1");
-  require(c.quality_level > 0 && c.quality_level < 1, "quality_level", c.quality_level,
-          "in (0, 1)");
-  require(c.block_size >= 1, "block_size", c.block_size, ">= 1");
-  require(c.grid_cols >= 1, "grid_cols", c.grid_cols, ">= 1");
-  require(c.grid_rows >= 1, "grid_rows", c.grid_rows, ">= 1");
-  require(c.border_px >= 0, "border_px", c.border_px, ">= 0");
-  require(p.klt_window_px >= 3 && p.klt_window_px % 2 == 1, "klt_window_px", p.klt_window_px,
-          "odd and >= 3");
-  require(p.klt_pyramid_levels >= 0 && p.klt_pyramid_levels <= 8, "klt_pyramid_levels",
-          p.klt_pyramid_levels, "in [0, 8]");
-  require(p.klt_predicted_levels >= 0 && p.klt_predicted_levels <= p.klt_pyramid_levels,
-          "klt_predicted_levels", p.klt_predicted_levels, "in [0, klt_pyramid_levels]");
-  require(c.min_eigenvalue >= 0, "min_eigenvalue", c.min_eigenvalue, ">= 0");
-  require(c.level >= 0 && c.level <= p.klt_pyramid_levels, "corner_level", c.level,
-          "in [0, klt_pyramid_levels] (a level of the KLT pyramid)");
-  require(p.klt_max_iterations >= 1, "klt_max_iterations", p.klt_max_iterations, ">= 1");
-  require(p.klt_epsilon > 0, "klt_epsilon", p.klt_epsilon, "> 0");
-  require(p.max_fb_error_px > 0, "max_fb_error_px", p.max_fb_error_px, "> 0");
+/// The rules a key's range cannot state (the ranges are FeatureTrackingOptions::describe()'s).
+void checkRulesBetweenKeys(const FeatureTrackerParams& p) {
+  require(p.klt_window_px % 2 == 1, "klt_window_px", p.klt_window_px, "odd");
+  require(p.klt_predicted_levels <= p.klt_pyramid_levels, "klt_predicted_levels",
+          p.klt_predicted_levels, "<= klt_pyramid_levels");
+  require(p.corners.level <= p.klt_pyramid_levels, "corner_level", p.corners.level,
+          "<= klt_pyramid_levels (a level of the KLT pyramid)");
   require(p.max_klt_residual_ratio == 0 || p.max_klt_residual_ratio >= 1, "max_klt_residual_ratio",
           p.max_klt_residual_ratio, "0 (off) or >= 1");
-  require(p.residual_gate_margin_px >= 0, "residual_gate_margin_px", p.residual_gate_margin_px,
-          ">= 0");
-  const auto& e = p.occlusion_edge;
-  require(e.radius_px >= 0, "occlusion_edge_radius_px", e.radius_px, ">= 0");
-  require(p.depth_edge_radius_px >= 0, "depth_edge_radius_px", p.depth_edge_radius_px, ">= 0");
-  require(e.min_gap_m > 0, "occlusion_edge_min_gap_m", e.min_gap_m, "> 0");
-  require(e.gap_ratio >= 0, "occlusion_edge_gap_ratio", e.gap_ratio, ">= 0");
-  require(p.fundamental_threshold_px > 0, "fundamental_threshold_px", p.fundamental_threshold_px,
-          "> 0");
-  require(p.fundamental_confidence > 0 && p.fundamental_confidence < 1, "fundamental_confidence",
-          p.fundamental_confidence, "in (0, 1)");
 }
+
+/// KLT's termination, per pyramid level: OpenCV's and VINS-Fusion's 30 iterations or an update
+/// under 0.01 px (0.001 px changed nothing: docs/notes/estimator.md).
+constexpr int kKltMaxIterations = 30;
+constexpr double kKltEpsilonPx = 0.01;
 
 /// KLT needs the whole window inside the image to trust a match (VINS-Fusion keeps 1 px).
 bool insideImage(const cv::Point2f& p, cv::Size size) {
@@ -98,13 +77,6 @@ class ScopedMs {
 
 }  // namespace
 
-FlowInit flowInitFromString(const std::string& text) {
-  if (text == "gyro") return FlowInit::Gyro;
-  if (text == "previous_motion") return FlowInit::PreviousMotion;
-  if (text == "none") return FlowInit::None;
-  throw std::invalid_argument("flow_init = '" + text + "': must be gyro, previous_motion or none");
-}
-
 std::string toString(FlowInit init) {
   switch (init) {
     case FlowInit::Gyro:
@@ -117,18 +89,9 @@ std::string toString(FlowInit init) {
   return "?";
 }
 
-ResidualGateRegion residualGateRegionFromString(const std::string& text) {
-  if (text == "everywhere") return ResidualGateRegion::Everywhere;
-  if (text == "near_nonrigid") return ResidualGateRegion::NearNonRigid;
-  throw std::invalid_argument("residual_gate_region = '" + text +
-                              "': must be everywhere or near_nonrigid");
+FeatureTracker::FeatureTracker(FeatureTrackerParams params) : params_(params) {
+  checkRulesBetweenKeys(params_);
 }
-
-std::string toString(ResidualGateRegion region) {
-  return region == ResidualGateRegion::Everywhere ? "everywhere" : "near_nonrigid";
-}
-
-FeatureTracker::FeatureTracker(FeatureTrackerParams params) : params_(params) { validate(params_); }
 
 void FeatureTracker::reset() {
   tracks_.clear();
@@ -203,23 +166,52 @@ std::vector<cv::Point2f> FeatureTracker::initialGuesses(const core::Frame& frame
   return guesses;
 }
 
+/// The previous frame's tracks after KLT both ways (FeatureTracker::kltBothWays).
+struct FeatureTracker::KltMatches {
+  std::vector<cv::Point2f> previous;  ///< each track's pixel in the previous frame
+  std::vector<cv::Point2f> guesses;   ///< where KLT started
+  std::vector<cv::Point2f> current;   ///< where KLT converged
+  std::vector<float> residual;        ///< KLT's, per track
+  std::vector<size_t> matched;        ///< the tracks that passed the forward-backward check
+};
+
 void FeatureTracker::trackExisting(const core::Frame& frame) {
   stats_.incoming = int(tracks_.size());
   if (tracks_.empty()) return;
+  const KltMatches m = kltBothWays(frame);
+  std::vector<Track> survivors;
+  std::vector<cv::Point2f> survivorsPrevious;
+  passResidualGate(frame, m, survivors, survivorsPrevious);
+  if (params_.fundamental_ransac) {
+    ScopedMs timer(stats_.ms_ransac);
+    rejectByFundamental(frame, survivorsPrevious, survivors);
+  }
+  tracks_ = std::move(survivors);
+  if (!tracks_.empty()) {
+    std::vector<double> vx, vy;
+    for (const auto& t : tracks_) {
+      vx.push_back(t.velocity.x);
+      vy.push_back(t.velocity.y);
+    }
+    median_velocity_ = cv::Point2f(float(core::upperMedian(vx)), float(core::upperMedian(vy)));
+  }
+}
+
+FeatureTracker::KltMatches FeatureTracker::kltBothWays(const core::Frame& frame) {
   const cv::Size size = frame.rgb.size();
   const cv::Size window(params_.klt_window_px, params_.klt_window_px);
-  const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
-                              params_.klt_max_iterations, params_.klt_epsilon);
-
-  std::vector<cv::Point2f> previous(tracks_.size());
-  for (size_t i = 0; i < tracks_.size(); ++i) previous[i] = tracks_[i].pixel;
+  const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, kKltMaxIterations,
+                              kKltEpsilonPx);
+  KltMatches m;
+  m.previous.resize(tracks_.size());
+  for (size_t i = 0; i < tracks_.size(); ++i) m.previous[i] = tracks_[i].pixel;
   bool predicted = false;
-  const std::vector<cv::Point2f> guesses = initialGuesses(frame, previous, predicted);
-  std::vector<cv::Point2f> current = guesses;
+  m.guesses = initialGuesses(frame, m.previous, predicted);
+  m.current = m.guesses;
   std::vector<uchar> status;
-  std::vector<float> residual;
   std::optional<ScopedMs> kltTimer(stats_.ms_klt);
-  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid_, previous, current, status, residual, window,
+  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid_, m.previous, m.current, status, m.residual,
+                           window,
                            predicted ? params_.klt_predicted_levels : params_.klt_pyramid_levels,
                            stop, cv::OPTFLOW_USE_INITIAL_FLOW);
 
@@ -230,78 +222,65 @@ void FeatureTracker::trackExisting(const core::Frame& frame) {
   std::vector<size_t> forward;
   std::vector<cv::Point2f> there, back;
   for (size_t i = 0; i < tracks_.size(); ++i) {
-    if (!status[i] || !insideImage(current[i], size)) {
+    if (!status[i] || !insideImage(m.current[i], size)) {
       ++stats_.lost_klt;
       continue;
     }
     forward.push_back(i);
-    there.push_back(current[i]);
-    back.push_back(previous[i]);
+    there.push_back(m.current[i]);
+    back.push_back(m.previous[i]);
   }
   std::vector<uchar> backStatus;
   std::vector<float> backResidual;
   if (!forward.empty())
     cv::calcOpticalFlowPyrLK(pyramid_, previous_pyramid_, there, back, backStatus, backResidual,
                              window, 0, stop, cv::OPTFLOW_USE_INITIAL_FLOW);
-
   kltTimer.reset();
 
-  std::vector<size_t> matched;  // passed forward-backward
   const double maxFb2 = params_.max_fb_error_px * params_.max_fb_error_px;
   for (size_t k = 0; k < forward.size(); ++k) {
-    const cv::Point2f d = back[k] - previous[forward[k]];
+    const cv::Point2f d = back[k] - m.previous[forward[k]];
     if (!backStatus[k] || d.dot(d) > maxFb2) {
       ++stats_.lost_fb;
       continue;
     }
-    matched.push_back(forward[k]);
+    m.matched.push_back(forward[k]);
   }
-  const double maxResidual = residualLimit(residual, matched);
+  return m;
+}
+
+void FeatureTracker::passResidualGate(const core::Frame& frame, const KltMatches& m,
+                                      std::vector<Track>& survivors,
+                                      std::vector<cv::Point2f>& survivorsPrevious) {
+  const double maxResidual = residualLimit(m.residual, m.matched);
   const std::vector<cv::Rect> gateBoxes = residualGateBoxes(frame);
   const auto gated = [&](size_t i) {
-    if (residual[i] <= maxResidual) return false;
+    if (m.residual[i] <= maxResidual) return false;
     if (params_.residual_gate_region == ResidualGateRegion::Everywhere) return true;
     // Tracks on the objects are the classification's to judge (dropping them cost recall).
-    if (insideAnyObjectMask(frame, current[i])) return false;
-    const cv::Point from(cvRound(previous[i].x), cvRound(previous[i].y));
-    const cv::Point to(cvRound(current[i].x), cvRound(current[i].y));
+    if (insideAnyObjectMask(frame, m.current[i])) return false;
+    const cv::Point from(cvRound(m.previous[i].x), cvRound(m.previous[i].y));
+    const cv::Point to(cvRound(m.current[i].x), cvRound(m.current[i].y));
     return std::any_of(gateBoxes.begin(), gateBoxes.end(),
                        [&](const cv::Rect& b) { return b.contains(from) || b.contains(to); });
   };
-
-  std::vector<Track> survivors;
-  std::vector<cv::Point2f> survivorsPrevious;
   std::vector<double> residuals, offsets;
-  for (const size_t i : matched) {
+  for (const size_t i : m.matched) {
     if (gated(i)) {
       ++stats_.lost_residual;
       continue;
     }
     Track t = tracks_[i];
-    t.velocity = current[i] - previous[i];
-    t.pixel = current[i];
+    t.velocity = m.current[i] - m.previous[i];
+    t.pixel = m.current[i];
     ++t.length;
     survivors.push_back(t);
-    survivorsPrevious.push_back(previous[i]);
-    residuals.push_back(residual[i]);
-    offsets.push_back(cv::norm(current[i] - guesses[i]));
+    survivorsPrevious.push_back(m.previous[i]);
+    residuals.push_back(m.residual[i]);
+    offsets.push_back(cv::norm(m.current[i] - m.guesses[i]));
   }
-  if (params_.fundamental_ransac) {
-    ScopedMs timer(stats_.ms_ransac);
-    rejectByFundamental(frame, survivorsPrevious, survivors);
-  }
-  tracks_ = std::move(survivors);
   stats_.median_klt_residual = core::upperMedian(residuals);
   stats_.median_init_offset_px = core::upperMedian(offsets);
-
-  if (!tracks_.empty()) {
-    std::vector<double> vx, vy;
-    for (const auto& t : tracks_) {
-      vx.push_back(t.velocity.x);
-      vy.push_back(t.velocity.y);
-    }
-    median_velocity_ = cv::Point2f(float(core::upperMedian(vx)), float(core::upperMedian(vy)));
-  }
 }
 
 double FeatureTracker::residualLimit(const std::vector<float>& residual,
@@ -420,9 +399,8 @@ void FeatureTracker::pruneAndDetect(const cv::Mat& gray,
   const size_t step = pyramid_.size() > size_t(params_.klt_pyramid_levels) + 1 ? 2 : 1;
   const cv::Mat& scored =
       params_.corners.level == 0 ? gray : pyramid_.at(step * size_t(params_.corners.level));
-  for (const auto& p :
-       detectGridCorners(scored, free, occupied, wanted, params_.corners, &stats_.cells_computed,
-                         rejected))
+  for (const auto& p : detectGridCorners(scored, free, occupied, wanted, params_.corners,
+                                         &stats_.cells_computed, rejected))
     tracks_.push_back({next_id_++, p, median_velocity_, 1});
   stats_.detected = int(tracks_.size()) - stats_.tracked;
 }

@@ -1,5 +1,7 @@
 // The feature tracker on real Kinect frames (../shared/data/7scenes, a static room): converted
 // by sevenscenes2rawlog and read back through io as the pipeline does.
+#include "MethodSettings.h"
+
 #include <dynslam/frontend/FeatureTracker.h>
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
@@ -26,7 +28,7 @@ TEST(FeatureTrackerSevenScenes, TracksAStaticRoomWithFewRejections) {
   sync.flush(frames);
   ASSERT_EQ(frames.size(), 90u);
 
-  frontend::FeatureTracker tracker;
+  frontend::FeatureTracker tracker(frontend::testing::methodTracking());
   size_t features = 0, withDepth = 0, lengthSum = 0, incoming = 0, lostRansac = 0, lost = 0;
   for (const auto& f : frames) {
     const auto out = tracker.track(f);

@@ -1,5 +1,6 @@
 // The feature tracker on simulator frames, scored against the simulator's truth: camera poses,
 // depth and per-pixel instance labels.
+#include "MethodSettings.h"
 #include "SimulatedFrames.h"
 
 #include <dynslam/core/Median.h>
@@ -97,7 +98,7 @@ RunSummary runTracker(const sim::Simulator& sim, FeatureTrackerParams params) {
 // their back-projected depth: the tracker's accuracy, with the simulator's noisy depth.
 TEST(FeatureTrackerSim, StaticFeaturesLandWhereTheCameraMotionPutsThem) {
   const sim::Simulator sim(scenario("indoor_people_high", {"Scenario.duration=1"}));
-  FeatureTracker tracker;
+  FeatureTracker tracker(frontend::testing::methodTracking());
   std::vector<double> errors = backgroundTrackErrors(sim, tracker);
   ASSERT_GT(errors.size(), 1000u) << "30 intervals with ~100 static features each";
   std::sort(errors.begin(), errors.end());
@@ -115,7 +116,7 @@ TEST(FeatureTrackerSim, GyroInitialFlowBeatsZeroInitialFlowOnAFastRotation) {
   const sim::Simulator sim(scenario(
       "static", {"Scenario.duration=1", "Camera.orbit_radius=0.05", "Camera.orbit_period=3",
                  "Camera.look_at_height=1.4", "Camera.bob_amplitude=0"}));
-  FeatureTrackerParams gyro, motion, none;
+  FeatureTrackerParams gyro = frontend::testing::methodTracking(), motion = gyro, none = gyro;
   motion.flow_init = FlowInit::PreviousMotion;
   none.flow_init = FlowInit::None;
   const auto a = runTracker(sim, gyro), b = runTracker(sim, none), c = runTracker(sim, motion);
@@ -143,7 +144,7 @@ TEST(FeatureTrackerSim, GyroInitialFlowBeatsZeroInitialFlowOnAFastRotation) {
 // 40 px in a frame; a jump of 80 px would be an id handed to another corner.)
 TEST(FeatureTrackerSim, IdsAreStableAndNeverReused) {
   const sim::Simulator sim(scenario("indoor_people_high", {"Scenario.duration=1"}));
-  FeatureTracker tracker;
+  FeatureTracker tracker(frontend::testing::methodTracking());
   std::map<int64_t, core::Feature> previous;
   std::set<int64_t> ended;
   int64_t maxId = -1;
@@ -182,7 +183,7 @@ TEST(FeatureTrackerSim, IdsAreStableAndNeverReused) {
 // filled to max_features, and new corners spread over the grid.
 TEST(FeatureTrackerSim, SpacingGridAndDepth) {
   const sim::Simulator sim(scenario("indoor_people_high", {"Scenario.duration=0.5"}));
-  FeatureTrackerParams params;
+  FeatureTrackerParams params = frontend::testing::methodTracking();
   params.corners.min_distance_px = 25;
   FeatureTracker tracker(params);
   const auto& g = params.corners;
@@ -236,7 +237,7 @@ TEST(FeatureTrackerSim, FundamentalRansacSparesFeaturesInsideObjectMasks) {
   mask.valid = true;
 
   const auto run = [&](bool masked) {
-    FeatureTracker tracker;
+    FeatureTracker tracker(frontend::testing::methodTracking());
     size_t inPatch = 0, inPatchContinued = 0, outside = 0, outsideContinued = 0;
     const cv::Rect inner(patch.x + 12, patch.y + 12, patch.width - 24, patch.height - 24);
     for (size_t i = 0; i < sim.frameCount(); ++i) {
@@ -280,7 +281,7 @@ TEST(FeatureTrackerSim, FundamentalRansacSparesFeaturesInsideObjectMasks) {
 TEST(FeatureTrackerSim, TracksBehindAnObjectsEdgeAreDroppedAndFewerSlideWithTheWalkers) {
   const sim::Simulator sim(scenario("indoor_people_high", {"Scenario.duration=2"}));
   const auto run = [&](int radius) {
-    FeatureTrackerParams params;
+    FeatureTrackerParams params = frontend::testing::methodTracking();
     params.max_features = 300;
     params.occlusion_edge.radius_px = radius;
     FeatureTracker tracker(params);
@@ -291,8 +292,8 @@ TEST(FeatureTrackerSim, TracksBehindAnObjectsEdgeAreDroppedAndFewerSlideWithTheW
         [&](const auto& f, const std::vector<core::Feature>& features) {
           const cv::Mat objects = f.truth.image.label > 0;
           for (const auto& feature : features)
-            behindEdge += frontend::behindOcclusionEdge(
-                f.frame.depth, feature.pixel, frontend::OcclusionEdgeParams{7}, objects);
+            behindEdge += frontend::behindOcclusionEdge(f.frame.depth, feature.pixel,
+                                                        frontend::OcclusionEdgeParams{7}, objects);
         });
     const size_t background = errors.size();
     const size_t sliding =

@@ -1,5 +1,7 @@
 // The FeatureTracking stage: registered by name, configured from [FeatureTracking] with every
 // key documented, clear errors naming a bad key, features written to the frame.
+#include "MethodSettings.h"
+
 #include <dynslam/core/Config.h>
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/frontend/FeatureTrackingStage.h>
@@ -24,6 +26,17 @@ std::string errorOf(const std::string& ini) {
     return e.what();
   }
   return "";
+}
+
+/// [FeatureTracking] with the method's settings (MethodSettings.h), then the lines of `ini`
+/// (key = value) over them.
+core::IniConfig methodTrackingWith(const std::string& ini) {
+  auto cfg = core::IniConfig::fromText(
+      std::string("[FeatureTracking]\n") + frontend::testing::kMethodTrackingIni, "test.ini");
+  std::istringstream lines(ini);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) cfg.applyOverride("FeatureTracking." + line);
+  return cfg;
 }
 
 /// A textured image shifted by `shift` pixels: something to track.
@@ -64,7 +77,7 @@ TEST(FeatureTrackingStage, EveryKeyIsWrittenWithAComment) {
   mrpt::config::CConfigFileMemory ini;
   options.saveToConfigFile(ini, "FeatureTracking");
   const auto keys = core::knownKeys(options);
-  EXPECT_EQ(keys.size(), 27u);
+  EXPECT_EQ(keys.size(), 25u);
   const std::string text = ini.getContent();
   std::istringstream lines(text);
   size_t commented = 0;
@@ -98,20 +111,20 @@ TEST(FeatureTrackingStage, BadInputIsAnErrorNamingTheKey) {
   EXPECT_NE(errorOf("[FeatureTracking]\nocclusion_edge_radius_px = -1\n")
                 .find("occlusion_edge_radius_px"),
             std::string::npos);
-  EXPECT_NE(
-      errorOf("[FeatureTracking]\ndepth_edge_radius_px = -2\n").find("depth_edge_radius_px"),
-      std::string::npos);
-  EXPECT_NE(errorOf("[FeatureTracking]\nocclusion_edge_min_gap_m = 0\n")
-                .find("occlusion_edge_min_gap_m"),
+  EXPECT_NE(errorOf("[FeatureTracking]\ndepth_edge_radius_px = -2\n").find("depth_edge_radius_px"),
             std::string::npos);
+  EXPECT_NE(
+      errorOf("[FeatureTracking]\nocclusion_edge_min_gap_m = 0\n").find("occlusion_edge_min_gap_m"),
+      std::string::npos);
   const std::string e = errorOf("[FeatureTracking]\nfundamental_confidence = 1\n");
-  EXPECT_NE(e.find("[FeatureTracking] fundamental_confidence"), std::string::npos) << e;
+  EXPECT_NE(e.find("[FeatureTracking] in test.ini: fundamental_confidence"), std::string::npos)
+      << e;
   EXPECT_NE(e.find("test.ini"), std::string::npos) << e;
 }
 
 TEST(FeatureTrackingStage, WritesStaticFeaturesWithIdsAndDepth) {
   FeatureTrackingStage stage;
-  stage.configure(core::IniConfig::fromText("[FeatureTracking]\n"), "FeatureTracking");
+  stage.configure(methodTrackingWith(""), "FeatureTracking");
   core::Frame first = texturedFrame(0, 0), second = texturedFrame(1, 6);
   stage.process(first);
   stage.process(second);
@@ -151,57 +164,61 @@ TEST(FeatureTrackingStage, WritesStaticFeaturesWithIdsAndDepth) {
   EXPECT_THROW(stage.process(noColour), std::invalid_argument);
 }
 
+namespace {
+
+// The image moves 6 px left and its right third loses half its contrast, as when a patch
+// slides onto another surface: KLT still converges there and most of those tracks pass the
+// forward-backward check; only the residual (~2x the rest's, which carry 2 grey levels of
+// noise) tells.
+// personOnTheRight: 0 none, 1 a person's box 20 px right of the change with a sliver of
+// mask, 2 the same box with all of it masked (the changed patches lie on the person).
+double residualGateRun(const std::string& ini, int personOnTheRight, size_t& kept,
+                       size_t& keptChanged) {
+  FeatureTrackingStage stage;
+  stage.configure(methodTrackingWith("fundamental_ransac = false\n" + ini), "FeatureTracking");
+  core::Frame first = texturedFrame(0, 0), second = texturedFrame(1, 6);
+  cv::Mat right = second.rgb(cv::Rect(440, 0, 200, 480));
+  right.convertTo(right, -1, 0.5, 0.5 * 128);
+  cv::RNG noise(5);
+  for (auto* f : {&first, &second}) {
+    cv::Mat n(f->rgb.size(), CV_16SC3);
+    noise.fill(n, cv::RNG::NORMAL, 0, 2);
+    cv::add(f->rgb, n, f->rgb, cv::noArray(), CV_8UC3);
+  }
+  if (personOnTheRight) {
+    core::Detection person;
+    person.box = cv::Rect2f(460, 0, 180, 480);
+    person.category = "person";
+    person.model = core::MotionModel::NonRigid;
+    second.detections = {person};
+    core::ObjectMask mask;
+    mask.detection = 0;
+    mask.roi = cv::Rect(460, 0, 180, 480);
+    mask.mask = cv::Mat(480, 180, CV_8UC1, cv::Scalar(personOnTheRight == 2 ? 255 : 0));
+    mask.mask.col(179).setTo(255);
+    mask.valid = true;
+    second.object_masks = {mask};
+  }
+  stage.process(first);
+  stage.process(second);
+  kept = keptChanged = 0;
+  for (const auto& f : second.features) {
+    if (f.track_length != 2) continue;
+    ++kept;
+    keptChanged += f.pixel.x > 450;
+  }
+  stage.finish();
+  for (const auto& [k, v] : stage.statistics())
+    if (k == "lost_residual_fraction") return v;
+  return -1.0;
+}
+
+}  // namespace
+
 TEST(FeatureTrackingStage, ResidualGateDropsPatchesWhoseAppearanceChanged) {
-  // The image moves 6 px left and its right third loses half its contrast, as when a patch
-  // slides onto another surface: KLT still converges there and most of those tracks pass the
-  // forward-backward check; only the residual (~2x the rest's, which carry 2 grey levels of
-  // noise) tells.
-  // personOnTheRight: 0 none, 1 a person's box 20 px right of the change with a sliver of
-  // mask, 2 the same box with all of it masked (the changed patches lie on the person).
-  const auto run = [](const std::string& ini, int personOnTheRight, size_t& kept,
-                      size_t& keptChanged) {
-    FeatureTrackingStage stage;
-    stage.configure(
-        core::IniConfig::fromText("[FeatureTracking]\nfundamental_ransac = false\n" + ini),
-        "FeatureTracking");
-    core::Frame first = texturedFrame(0, 0), second = texturedFrame(1, 6);
-    cv::Mat right = second.rgb(cv::Rect(440, 0, 200, 480));
-    right.convertTo(right, -1, 0.5, 0.5 * 128);
-    cv::RNG noise(5);
-    for (auto* f : {&first, &second}) {
-      cv::Mat n(f->rgb.size(), CV_16SC3);
-      noise.fill(n, cv::RNG::NORMAL, 0, 2);
-      cv::add(f->rgb, n, f->rgb, cv::noArray(), CV_8UC3);
-    }
-    if (personOnTheRight) {
-      core::Detection person;
-      person.box = cv::Rect2f(460, 0, 180, 480);
-      person.category = "person";
-      person.model = core::MotionModel::NonRigid;
-      second.detections = {person};
-      core::ObjectMask mask;
-      mask.detection = 0;
-      mask.roi = cv::Rect(460, 0, 180, 480);
-      mask.mask = cv::Mat(480, 180, CV_8UC1, cv::Scalar(personOnTheRight == 2 ? 255 : 0));
-      mask.mask.col(179).setTo(255);
-      mask.valid = true;
-      second.object_masks = {mask};
-    }
-    stage.process(first);
-    stage.process(second);
-    kept = keptChanged = 0;
-    for (const auto& f : second.features) {
-      if (f.track_length != 2) continue;
-      ++kept;
-      keptChanged += f.pixel.x > 450;
-    }
-    stage.finish();
-    for (const auto& [k, v] : stage.statistics())
-      if (k == "lost_residual_fraction") return v;
-    return -1.0;
-  };
+  const auto run = residualGateRun;
   size_t kept = 0, changed = 0;
-  EXPECT_EQ(run("", 1, kept, changed), 0.0) << "the gate is off by default";
+  EXPECT_EQ(run("", 1, kept, changed), 0.0) << "the method's settings: the gate off";
   EXPECT_GT(changed, 20u) << "without the gate the changed patches are tracked";
   const size_t keptOff = kept, changedOff = changed;
   for (const int person : {0, 1}) {

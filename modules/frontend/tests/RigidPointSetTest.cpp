@@ -2,6 +2,8 @@
 // starts moving rigidly with the set joins it (P2), a member that breaks away leaves it (P1),
 // and the virtual centroid is carried with the estimated motion, unmoved by members coming and
 // going.
+#include "MethodSettings.h"
+
 #include <dynslam/frontend/RigidPointSet.h>
 
 #include <gtest/gtest.h>
@@ -55,7 +57,7 @@ struct Body {
 
 TEST(AdaptiveRigidPointSet, AdmitsAJoinerDropsALeaverAndCarriesTheVirtualCentroid) {
   Body body;
-  AdaptiveRigidPointSet set;  // the method's settings: 4 pairs, 100 iterations, tau 0.03 m
+  AdaptiveRigidPointSet set(testing::methodRigidSet());  // 4 pairs, 100 iterations, tau 0.03 m
   ASSERT_TRUE(set.update(body.advance()));
   EXPECT_TRUE(set.lastUpdate().created);
   EXPECT_EQ(set.members().size(), 13u);  // the torso and the leaver, nothing else
@@ -103,7 +105,7 @@ TEST(AdaptiveRigidPointSet, NoSetWithoutEnoughRigidPoints) {
     const Eigen::Vector3d p(0.3 * i, 0.1 * i * i, 3.0);
     pairs.push_back({i, p, p + Eigen::Vector3d(0.2 * i, -0.15 * i * (i % 2), 0.1 * (i % 3))});
   }
-  AdaptiveRigidPointSet set;
+  AdaptiveRigidPointSet set(testing::methodRigidSet());
   EXPECT_FALSE(set.update(pairs));
   EXPECT_FALSE(set.exists());
 }
@@ -118,7 +120,7 @@ namespace {
 /// moving 5 cm per frame, its points read with the depth noise of the simulator's sensor
 /// after the window median (0.0015 z^2 / 4: 2.4 cm), through a set with `prior` (rad per frame).
 double medianRotationErrorDeg(double prior) {
-  RigidPointSetParams params;
+  RigidPointSetParams params = testing::methodRigidSet();
   params.rotation_prior_sigma = prior;
   AdaptiveRigidPointSet set(params, 3);
   const RigidMotion step{Eigen::AngleAxisd(M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix(),
@@ -168,7 +170,7 @@ TEST(AdaptiveRigidPointSet, ARotationPriorSteadiesAFarBodysRotation) {
 // prior's translation is fitted on the same gated members: fitted on all of them, it put this
 // car's centroid 3.2 cm off (and the cars of bench-classification with exact depth 1.3-1.6 cm).
 TEST(AdaptiveRigidPointSet, ASlidingCornerLeftOutOnTheRaysStaysOutOfThePriorsTranslation) {
-  RigidPointSetParams params;
+  RigidPointSetParams params = testing::methodRigidSet();
   params.pixel_sigma_px = 0.3;
   params.rotation_prior_sigma = 0.0087;
   AdaptiveRigidPointSet set(params, 3);

@@ -1,17 +1,15 @@
 #pragma once
 // The camera's own motion between two frames, which the scene flow (method.md Eq. 11) removes.
 //
-// Why this source: the method predicts it "from the IMU", but the IMU alone gives only the
-// rotation (the gyro integrated over the frame's samples); the translation needs the velocity,
-// which only the estimator (issue 6) will provide. So the translation comes from the background
-// itself, i.e. the features outside every object mask, which are static in the scenes the method
-// targets and are metric thanks to the depth:
+// The method predicts it "from the IMU", but the IMU alone gives only the rotation (the gyro
+// integrated over the frame's samples); the translation needs the velocity. So the translation
+// comes from the background itself, the features outside every object mask, static in the
+// scenes the method targets and metric thanks to the depth:
 //  - with a gyro: the rotation is the gyro's and only the translation is registered (RANSAC
 //    over one-pair hypotheses, then the inverse-variance weighted mean of the inliers). A full
-//    3-D registration of points 2-6 m away with a D455-like depth noise (1.5 cm at 3 m) gets
-//    the rotation wrong by 0.2-0.5 deg per frame, which the translation then compensates by
-//    1-3 cm (measured on indoor_people_high, 21.8 mm median error); the gyro's rotation over
-//    33 ms is good to a few hundredths of a degree. When it leaves most pairs unexplained
+//    3-D registration of points metres away gets the rotation wrong by tenths of a degree per
+//    frame under the depth noise, which the translation then compensates by centimetres; the
+//    gyro's rotation over a frame is good to hundredths. When it leaves most pairs unexplained
 //    (extrinsics that do not hold), the full registration below is tried as well;
 //  - without a gyro: the 4-point RANSAC 3-D registration (RigidRegistration.h) with the
 //    previous motion as an extra hypothesis, then the precise registration on all inliers.
@@ -20,9 +18,8 @@
 // view), the gyro rotation with the recent translation, else the previous motion, stands in
 // (constant velocity). The recent translation is the component-wise median of the last
 // kRecentTranslations registered ones, not the last one: the last registration before the view
-// fills up is the one made on the fewest pairs (indoor_people_low with injected faults: 11
-// pairs, 5.4 mm per frame off in depth, which a standing person's scene flow then read as 0.19
-// m/s for five frames).
+// fills up is the one made on the fewest pairs. Measured: docs/notes/frontend.md, 2026-11-28
+// (front-end settings' history).
 #include <dynslam/core/Frame.h>
 #include <dynslam/frontend/RigidRegistration.h>
 

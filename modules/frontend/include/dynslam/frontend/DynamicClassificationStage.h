@@ -3,22 +3,21 @@
 // DynamicClassifier (scene-flow classification and adaptive rigid point sets, method.md
 // sections 3-4) on every frame. Runs after the perception stages (masks and tracks) and
 // FeatureTracking (features with ids, pixels and depths); writes each feature's class and
-// object id, Frame::object_motions and Frame::rigid_sets. The keys and their defaults are in
-// saveToConfigFile (the generated key reference).
+// object id, Frame::object_motions and Frame::rigid_sets.
+#include <dynslam/core/Options.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/frontend/DynamicClassifier.h>
-
-#include <mrpt/config/CLoadableOptions.h>
 
 #include <memory>
 
 namespace dynslam::frontend {
 
-struct DynamicClassificationOptions : mrpt::config::CLoadableOptions {
+/// [DynamicClassification]: every key, its range and meaning in describe()
+/// (DynamicClassificationStage.cpp).
+struct DynamicClassificationOptions : core::Options {
   DynamicClassifierParams classifier;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 class DynamicClassificationStage : public core::Stage {

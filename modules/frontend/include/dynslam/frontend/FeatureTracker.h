@@ -25,8 +25,7 @@ enum class FlowInit {
   None,            ///< the point's previous pixel (plain pyramidal KLT)
 };
 
-/// "gyro", "previous_motion", "none"; std::invalid_argument naming the text otherwise.
-FlowInit flowInitFromString(const std::string& text);
+/// "gyro", "previous_motion", "none".
 std::string toString(FlowInit init);
 
 /// Which tracks the KLT residual gate judges.
@@ -35,58 +34,40 @@ enum class ResidualGateRegion {
   NearNonRigid  ///< tracks outside every object mask, within the margin of a non-rigid one's box
 };
 
-/// "everywhere", "near_nonrigid"; std::invalid_argument naming the text otherwise.
-ResidualGateRegion residualGateRegionFromString(const std::string& text);
-std::string toString(ResidualGateRegion region);
-
+/// [FeatureTracking]'s settings. Keys, ranges, meanings: describe() in FeatureTrackingStage.cpp;
+/// docs/parameters.md; why the departures from the method, with their measured gains:
+/// docs/design.md, docs/notes/frontend.md (2026-11-28, front-end settings' history).
 struct FeatureTrackerParams {
-  int max_features = 150;    ///< tracked + new corners per frame
-  GridCornerParams corners;  ///< spacing, Shi-Tomasi quality, grid
-  /// KLT window side, pixels (odd). Measured with bench-frontend: 21 (VINS-Fusion's) takes
-  /// ~1.4x the KLT time for the same tracks on the simulator and ~20 % longer ones on
-  /// 7-Scenes; 11 takes ~0.5x, ~15 % shorter tracks on 7-Scenes.
-  int klt_window_px = 15;
-  int klt_pyramid_levels = 3;  ///< pyramid levels above the image without a prediction (0: none)
-  /// Levels when the search starts at a predicted pixel (gyro or previous motion): the
-  /// prediction leaves only the parallax and the objects' own motion to find, so fewer levels
-  /// do (VINS-Fusion uses 1; 2 keeps more of the tracks on people walking close by). The backward
-  /// pass of the forward-backward check starts at the point's previous pixel and uses the image
-  /// alone.
+  int max_features = 300;
+  GridCornerParams corners;
+  int klt_window_px = 11;
+  int klt_pyramid_levels = 3;
+  /// The prediction (gyro or previous motion) leaves only the parallax and the objects' own
+  /// motion to find, so fewer levels do. The backward pass of the forward-backward check starts
+  /// at the point's previous pixel and uses the image alone.
   int klt_predicted_levels = 2;
-  int klt_max_iterations = 30;
-  double klt_epsilon = 0.01;     ///< px; KLT stops when an update moves the point less
-  double max_fb_error_px = 0.5;  ///< forward-backward: the back-tracked point must land this close
-  /// Not the method: drop a track whose KLT residual (mean absolute grey difference over the
-  /// window) is above this times the median of the frame's tracks; 0: off. A background patch
-  /// that a walking person's silhouette passes over slides with it and can still pass the
-  /// forward-backward check; its residual gives it away. Relative to the median, so it follows
-  /// the images' noise and contrast. Measured in README "Front-end".
-  double max_klt_residual_ratio = 0;
-  /// Where the gate applies. Everywhere also drops good tracks whose appearance changes with
-  /// the viewpoint (outdoor_street_high: tracks half as long, APE worse on all 9 seeds), so
-  /// the default judges only the tracks next to people, whose silhouettes make the sliding ones;
-  /// tracks on the objects are the classification's (gating them cost dynamic recall).
+  double max_fb_error_px = 0.5;
+  /// A background patch that a walking person's silhouette passes over slides with it and can
+  /// still pass the forward-backward check; its residual gives it away. Relative to the
+  /// frame's median, so it follows the images' noise and contrast.
+  double max_klt_residual_ratio = 3;
+  /// Near non-rigid objects only: elsewhere the gate also drops good tracks whose appearance
+  /// changes with the viewpoint, and tracks on the objects are the classification's to judge.
   ResidualGateRegion residual_gate_region = ResidualGateRegion::NearNonRigid;
-  double residual_gate_margin_px = 20;  ///< px around a non-rigid object's box (near_nonrigid)
-  /// Not the method: tracks and new corners just behind an occluding edge are dropped
-  /// (frontend/OcclusionEdge.h: such a corner follows the nearer silhouette); radius 0: off.
-  OcclusionEdgeParams occlusion_edge;
+  double residual_gate_margin_px = 20;
+  OcclusionEdgeParams occlusion_edge{11};  ///< OcclusionEdge.h
   /// Only an object mask's readings are the nearer surface: the silhouettes that move. Static
-  /// edges (a desk before a wall) shift their T-junctions by parallax only, and their corners
-  /// are many of a static room's (7-Scenes, RGB-D only: APE 0.0278 -> 0.0309 m with every
-  /// edge, radius 11).
+  /// edges shift their T-junctions by parallax only, and their corners are many of a static
+  /// room's.
   bool occlusion_edge_objects_only = true;
-  /// Not the method: a feature with a depth edge (nearer or farther by the occlusion edge's
-  /// gap, or no reading) within this many pixels gets Feature::depth_at_edge, and the
-  /// estimator leaves its reading out; 0: off. As the track moves by a fraction of a pixel its
-  /// reading can switch surfaces.
-  int depth_edge_radius_px = 0;
+  /// As a track moves by a fraction of a pixel its reading next to a depth edge can switch
+  /// surfaces: the estimator leaves such readings out (Feature::depth_at_edge).
+  int depth_edge_radius_px = 5;
   FlowInit flow_init = FlowInit::Gyro;
-  bool fundamental_ransac = true;  ///< RANSAC on F over the static candidates
-  /// Max distance to the epipolar line, pixels. 1.0 (VINS-Fusion at focal 460 is ~1.2 here)
-  /// rejected 3.8 % of the tracks per frame in the static 7-Scenes room (mean track 12 frames);
-  /// 1.5 rejects 1.5 % (16.5 frames) and still drops a patch moving 8 px per frame against
-  /// the camera's epipolar geometry (FeatureTrackerSimTest), i.e. a person missed by the masks.
+  bool fundamental_ransac = true;
+  /// Looser than VINS-Fusion's (~1.2 px at this focal length): tighter rejects many good tracks
+  /// of a static room; 1.5 still drops a patch moving 8 px per frame against the camera's
+  /// epipolar geometry (FeatureTrackerSimTest), i.e. a person the masks missed.
   double fundamental_threshold_px = 1.5;
   double fundamental_confidence = 0.99;
 };
@@ -115,7 +96,9 @@ struct FeatureTrackerStats {
 
 class FeatureTracker {
  public:
-  /// Throws std::invalid_argument naming a parameter out of range.
+  /// Throws std::invalid_argument naming a parameter that breaks a rule between keys (window
+  /// odd, levels within the pyramid, residual ratio 0 or >= 1); the ranges of single keys are
+  /// checked where the options are read (FeatureTrackingOptions).
   explicit FeatureTracker(FeatureTrackerParams params = {});
 
   /// Tracks the previous frame's features into `frame` (its colour image, intrinsics, IMU
@@ -140,7 +123,14 @@ class FeatureTracker {
   std::vector<cv::Point2f> initialGuesses(const core::Frame& frame,
                                           const std::vector<cv::Point2f>& previous,
                                           bool& predicted);
+  struct KltMatches;  // FeatureTracker.cpp
+  /// KLT, forward-backward check, residual gate and fundamental-matrix RANSAC on tracks_.
   void trackExisting(const core::Frame& frame);
+  /// KLT from the previous frame into this one and back (the KLT time in stats_).
+  KltMatches kltBothWays(const core::Frame& frame);
+  /// The matched tracks the residual gate keeps, moved to this frame, with their previous pixels.
+  void passResidualGate(const core::Frame& frame, const KltMatches& m,
+                        std::vector<Track>& survivors, std::vector<cv::Point2f>& survivorsPrevious);
   /// The residual above which a forward-backward survivor is dropped (infinity: no gate).
   double residualLimit(const std::vector<float>& residual,
                        const std::vector<size_t>& matched) const;
@@ -153,8 +143,7 @@ class FeatureTracker {
   /// Drops the tracks at the pixels `where` says; how many.
   int dropTracks(const std::function<bool(const cv::Point2f&)>& where);
   /// Spacing among the tracks, then new corners where `rejected` (optional) does not say no.
-  void pruneAndDetect(const cv::Mat& gray,
-                      const std::function<bool(const cv::Point2f&)>& rejected);
+  void pruneAndDetect(const cv::Mat& gray, const std::function<bool(const cv::Point2f&)>& rejected);
 
   FeatureTrackerParams params_;
   FeatureTrackerStats stats_;

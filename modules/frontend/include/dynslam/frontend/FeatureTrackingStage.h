@@ -4,10 +4,9 @@
 // -1 (the DynamicClassification stage after it assigns objects and classes). Runs after
 // Segmentation so the fundamental-matrix RANSAC sees the object masks; without them every
 // feature is a static candidate.
+#include <dynslam/core/Options.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/frontend/FeatureTracker.h>
-
-#include <mrpt/config/CLoadableOptions.h>
 
 #include <cstdint>
 #include <map>
@@ -17,11 +16,11 @@
 
 namespace dynslam::frontend {
 
-struct FeatureTrackingOptions : mrpt::config::CLoadableOptions {
+/// [FeatureTracking]: every key, its range and meaning in describe() (FeatureTrackingStage.cpp).
+struct FeatureTrackingOptions : core::Options {
   FeatureTrackerParams tracker;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 class FeatureTrackingStage : public core::Stage {

@@ -15,22 +15,22 @@
 
 namespace dynslam::frontend {
 
+/// [FeatureTracking]'s corner settings. Keys, ranges, meanings: FeatureTrackingOptions::describe()
+/// (FeatureTrackingStage.cpp); docs/parameters.md.
 struct GridCornerParams {
-  double min_distance_px = 20;  ///< no two corners (new or tracked) closer than this
-  /// Shi-Tomasi: a corner's min eigenvalue must reach this fraction of its cell's best...
+  double min_distance_px = 20;
   double quality_level = 0.01;
-  /// ...and this absolute value on the scored image (OpenCV's cornerMinEigenVal units:
-  /// gradients of the 8-bit image scaled to [0, 1]), so a bare wall does not fill its cell
-  /// with noise. Colour noise of sigma 3 peaks at ~6e-5 on level 1 but ~4e-4 at full
-  /// resolution (level 0: raise this to ~1e-3); corners of real texture score 1e-3 to 1e-1.
+  /// Absolute, on the scored image (OpenCV's cornerMinEigenVal units: gradients of the 8-bit
+  /// image scaled to [0, 1]), so a bare wall does not fill its cell with noise; image noise
+  /// scores higher at full resolution than on level 1.
   double min_eigenvalue = 2e-4;
-  int block_size = 3;  ///< Shi-Tomasi gradient covariance window, pixels
-  int grid_cols = 8;   ///< cells across; new corners fill the emptiest cells first
-  int grid_rows = 6;   ///< cells down
-  int border_px = 8;   ///< no new corner this close to the image edge (KLT window)
-  /// Corners are scored on the image downsampled 2^level times (a level of the KLT pyramid,
-  /// already built): level 1 scores 4x fewer pixels, the costliest part of the detection, and
-  /// finds corners of 2-pixel-and-up structure, which track at least as well as the finest.
+  int block_size = 3;
+  int grid_cols = 8;
+  int grid_rows = 6;
+  int border_px = 8;  ///< the KLT window needs the pixels around a corner
+  /// A level of the KLT pyramid, already built: level 1 scores 4x fewer pixels, the costliest
+  /// part of the detection, and finds corners of 2-pixel-and-up structure, which track at least
+  /// as well as the finest.
   int level = 1;
 };
 

@@ -3,9 +3,9 @@
 // occlusion_edge_radius_px). A corner there has the nearer surface's silhouette in its KLT
 // window (and in the wider windows of the coarser pyramid levels), so its image motion can
 // follow that edge while its depth is the far surface's: on a standing person uncovered by a
-// walker its scene flow reads the walker's speed (indoor_people_high seed 6 frame 283: 10 of the
-// standing person's 16 measured features at 1.3-1.9 m/s), on the background it is a "static"
-// point that moves with the walker.
+// walker its scene flow reads the walker's speed, on the background it is a "static" point that
+// moves with the walker. Measured: docs/notes/frontend.md, 2026-11-28 (front-end settings'
+// history).
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>
 
@@ -15,8 +15,7 @@ struct OcclusionEdgeParams {
   int radius_px = 0;        ///< square window half-side; 0: off
   double min_gap_m = 0.15;  ///< a nearer surface is one nearer by more than this ...
   /// ... and than this times the point's depth: the depth noise grows with the depth, and the
-  /// window's nearest reading is its noisiest. 0.05 took noise for edges on the street
-  /// (outdoor_street_high seed 5: features with depth 66 % -> 56 %); 0.1 did not.
+  /// window's nearest reading is its noisiest (a smaller ratio took noise for edges).
   double gap_ratio = 0.1;
 };
 

@@ -6,11 +6,11 @@
 // towards the camera, gets its motion from the depth differences alone. Here each pair's residual
 // q - (R p + t) is weighed by the inverse of its covariance Sigma_q + R Sigma_p R^T (each point's
 // covariance elongated along its ray): the linearised maximum likelihood of the pair with the
-// point's true position marginalised. The rotation then comes mostly from the pixels, as in PnP:
-// for 8 corners on a car 9 m away (3 cm along, 0.3 px across) the median rotation error halves and
-// the translation at the centroid improves by a tenth (RayNoiseRegistrationTest). More is gained
-// on real tracks by the gate it allows (inliersOnRays). Not the method: the rigid point sets use
-// it with [DynamicClassification] rigid_pixel_sigma > 0.
+// point's true position marginalised. The rotation then comes mostly from the pixels, as in PnP
+// (RayNoiseRegistrationTest: a car's corners 9 m away). More is gained on real tracks by the
+// gate it allows (inliersOnRays). Not the method: the rigid point sets use it with
+// [DynamicClassification] rigid_pixel_sigma > 0. Measured: docs/notes/frontend.md, 2026-11-28
+// (front-end settings' history).
 #include <dynslam/frontend/RigidRegistration.h>
 
 #include <Eigen/Core>

@@ -48,15 +48,15 @@ struct RigidPointSetParams {
   /// blended with the prediction by their variances (the registration's from the depth noise
   /// and the members' spread); the translation then follows from the weighted centroids. Not
   /// the method (0: off). Needs depth_sigma_z2 > 0 and the camera's rotation in update().
-  double rotation_prior_sigma = 0.0;
+  double rotation_prior_sigma = 0.0087;
   /// px; > 0: the precise registration is refined with each point's noise along its ray (the
   /// depth's, as above) and across it (this pixel sigma at the point's depth), then refitted on
   /// the members within ray_gate_sigmas of that motion by the same noise (RayNoiseRegistration.h).
   /// The membership stays RANSAC's: made the members, the gate's smaller sets were created afresh
-  /// 11-20 % more often (indoor_people_high), each time with a new virtual centroid. Not the
-  /// method (0: off, Kabsch on the RANSAC inliers). Needs depth_sigma_z2 > 0 and the focal
+  /// more often, each time with a new virtual centroid (docs/notes/frontend.md, 2026-11-28). Not
+  /// the method (0: off, Kabsch on the RANSAC inliers). Needs depth_sigma_z2 > 0 and the focal
   /// length in update().
-  double pixel_sigma_px = 0.0;
+  double pixel_sigma_px = 0.3;
   double ray_gate_sigmas = 3.5;
 };
 
@@ -105,6 +105,16 @@ class AdaptiveRigidPointSet {
                           const std::vector<Eigen::Vector3d>& q, const std::vector<double>& weights,
                           const Eigen::Matrix3d& cameraRotation, bool continued);
   RigidSetUpdate last_;
+
+  struct PairNoise;  // RigidPointSet.cpp
+  PairNoise pairNoise(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q,
+                      double focalPx) const;
+  /// motion_ from RANSAC's result `r`: the precise registration (on the rays with
+  /// pixel_sigma_px), then the rotation prior.
+  void registerPrecisely(const RegistrationResult& r, bool continued, const PairNoise& n,
+                         const std::vector<Eigen::Vector3d>& p,
+                         const std::vector<Eigen::Vector3d>& q,
+                         const Eigen::Matrix3d& cameraRotation);
 };
 
 }  // namespace dynslam::frontend

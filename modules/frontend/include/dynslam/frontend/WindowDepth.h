@@ -15,10 +15,10 @@ namespace dynslam::frontend {
 /// readings, sigma = sigmaZ2 z^2 (the depth noise model; 0: no noise term). 0 when no reading
 /// is valid. `buf` is scratch space.
 ///
-/// The noise term matters beyond about 5 m: with 2 % alone, 9 m away (sigma 12 cm) the band
-/// centred on the pixel's own noisy reading kept mostly the window's readings on that side of
-/// the surface, and the median kept about half of that reading's error instead of a quarter
-/// (bench-classification, outdoor_street_high seed 1: a parked car 9 m away read 0.3-2 m/s).
+/// The noise term matters beyond about 5 m: with 2 % alone the band centred on the pixel's own
+/// noisy reading keeps mostly the window's readings on that side of the surface, and the median
+/// keeps about half of that reading's error instead of a quarter. Measured:
+/// docs/notes/frontend.md, 2026-11-28 (front-end settings' history).
 float windowDepth(const cv::Mat& depth, const cv::Point2f& pixel, int half, double sigmaZ2,
                   std::vector<double>& buf);
 
