@@ -84,7 +84,7 @@ void EstimatorStage::tryImuInitialization(double t) {
   if (!imu_ || window_->usesImu() || int(window_->size()) < options_.window.window_size) return;
   // The alignment trusts the visual poses: not while the window holds keyframes that saw too
   // little (black or featureless frames, whose poses are only predictions).
-  for (const std::size_t n : window_features_)
+  for (const std::size_t n : window_->featureCounts())
     if (int(n) < options_.keyframes.min_shared) return;
   std::vector<ImuInitKeyframe> keyframes;
   std::vector<ImuPreintegration*> preintegrations;
@@ -231,7 +231,6 @@ void EstimatorStage::process(core::Frame& frame) {
       MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed (" << report.message
                                      << "), window restarted");
       startWindow(frame);
-      window_features_.assign(1, in.features.size());
       in.T_world_body = T_wb;
       in.preintegration = nullptr;
       window_->addKeyframe(in);

@@ -221,6 +221,7 @@ SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
   Keyframe k;
   k.id = next_id_++;
   k.t = input.t;
+  k.features = input.features.size();
   poseToBlock(input.T_world_body, k.pose);
   // A visual-inertial keyframe without a preintegration (the IMU stream had a gap): no IMU
   // factor ties its velocity to the previous keyframe's, and the iteration-capped solves move a
@@ -413,6 +414,11 @@ void SlidingWindow::switchToImu(const ImuInitialization& init) {
 }
 
 double SlidingWindow::latestTime() const { return keyframes_.back().t; }
+std::vector<std::size_t> SlidingWindow::featureCounts() const {
+  std::vector<std::size_t> counts;
+  for (const Keyframe& k : keyframes_) counts.push_back(k.features);
+  return counts;
+}
 Eigen::Isometry3d SlidingWindow::latestPose() const {
   return poseFromBlock(keyframes_.back().pose);
 }

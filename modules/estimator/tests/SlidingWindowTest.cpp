@@ -496,3 +496,24 @@ TEST(SlidingWindow, KeepsTheScaleOnExactDataAndOnAverageUnderNoise) {
     EXPECT_LT(std::abs(mean), 0.005) << pixel << " px, depth noise " << depth << " z^2";
   }
 }
+
+TEST(SlidingWindow, CountsEachKeyframesFeaturesUntilItLeaves) {
+  Scene scene;
+  SlidingWindow window(fiveKeyframes(false), scene.camera, scene.T_body_camera);
+  std::mt19937 rng(2);
+  std::vector<std::size_t> given;
+  for (int k = 0; k < 8; ++k) {
+    const double t = 1.0 + 0.1 * k;
+    KeyframeInput in;
+    in.t = t;
+    in.T_world_body = scene.bodyAt(t);
+    in.features = scene.observe(t, rng, 0.0);
+    if (k == 1) in.features.clear();  // a black frame
+    if (k == 2) in.features.resize(7);
+    given.push_back(in.features.size());
+    window.addKeyframe(in);
+    const std::size_t first = given.size() > 5 ? given.size() - 5 : 0;
+    EXPECT_EQ(window.featureCounts(),
+              std::vector<std::size_t>(given.begin() + long(first), given.end()));
+  }
+}

@@ -36,7 +36,6 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 
-#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -119,7 +118,6 @@ class EstimatorStage : public core::Stage {
   std::unique_ptr<KeyframeImu> imu_;
   std::unique_ptr<GnssAnchor> gnss_;
   ObjectTrajectories objects_;
-  std::deque<std::size_t> window_features_;  // static features given to each window keyframe
   KeyframeSelector selector_;
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
   std::vector<double> solve_ms_;

@@ -140,6 +140,9 @@ class SlidingWindow {
   bool empty() const { return keyframes_.empty(); }
   std::size_t size() const { return keyframes_.size(); }
   double latestTime() const;
+  /// The static features each keyframe of the window was given (KeyframeInput::features),
+  /// oldest first: they enter and leave with their keyframes.
+  std::vector<std::size_t> featureCounts() const;
   Eigen::Isometry3d latestPose() const;
   Eigen::Vector3d latestVelocity() const;
   Eigen::Vector3d latestAccBias() const;
@@ -189,6 +192,7 @@ class SlidingWindow {
   struct Keyframe {
     std::int64_t id = 0;
     double t = 0;
+    std::size_t features = 0;  // static features given to it
     double pose[7];
     double speed_bias[9];
     std::shared_ptr<ImuPreintegration> preintegration;  // from the previous keyframe
