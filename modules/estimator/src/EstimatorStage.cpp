@@ -14,21 +14,7 @@ EstimatorStage::EstimatorStage() = default;
 EstimatorStage::~EstimatorStage() = default;
 
 void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& section) {
-  try {
-    core::loadOptionsStrict(options_, cfg, section);
-  } catch (const std::invalid_argument& e) {
-    throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
-  }
-  const auto& w = options_.window;
-  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) ||
-      w.solver_threads < 1 || w.line_search_steps < 0 || !(w.pixel_sigma > 0) ||
-      !(w.huber_sigmas > 0) || options_.min_pnp_inliers < 4 ||
-      !(options_.pnp_max_imu_correction_m >= 0) || !(options_.pnp_max_imu_correction_deg >= 0))
-    throw core::ConfigError(
-        "[" + section + "] in " + cfg.source() +
-        ": window_size >= 2, max_iterations >= 1, solver_threads >= 1, "
-        "line_search_steps >= 0, min_pnp_inliers >= 4, pnp_max_imu_correction_m/_deg >= 0 and "
-        "positive max_solver_time, pixel_sigma, huber_sigmas are required");
+  core::loadOptionsStrict(options_, cfg, section);
   selector_ = KeyframeSelector(options_.keyframes);
 }
 
@@ -38,7 +24,8 @@ void EstimatorStage::startWindow(const core::Frame& frame) {
     throw std::runtime_error("Estimator: frame " + std::to_string(frame.index) +
                              " has no camera intrinsics");
   SlidingWindowParams params = options_.window;
-  params.use_imu = false;  // until the IMU initialization succeeds
+  params.use_imu = false;  // until the IMU initialization succeeds, which finds the gravity
+  params.gravity = Eigen::Vector3d(0, 0, -options_.imu_init.gravity_magnitude);
   window_ = std::make_unique<SlidingWindow>(params, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
                                             frame.T_body_imu.inverse() * frame.T_body_camera);
   selector_ = KeyframeSelector(options_.keyframes);

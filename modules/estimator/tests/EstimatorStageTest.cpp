@@ -62,3 +62,31 @@ TEST(EstimatorStage, ImuInitializationWaitsUntilAFeaturelessKeyframeHasLeftTheWi
     EXPECT_EQ(firstVisualInertial(keyframes), blackStart ? 10 : 9);
   }
 }
+
+// [Estimator] is read through EstimatorOptions::describe(): a value outside a key's range, or a
+// setting that acts only through another one left off, is refused naming the keys.
+TEST(EstimatorOptions, RefusesValuesOutOfRangeAndSettingsThatWouldDoNothing) {
+  const auto refusal = [](const std::string& settings) -> std::string {
+    try {
+      makeStage(settings);
+    } catch (const core::ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(refusal("window_size = 1\n").find("window_size"), std::string::npos);
+  EXPECT_NE(refusal("pnp_max_imu_correction_m = -0.1\n").find("pnp_max_imu_correction_m"),
+            std::string::npos);
+  EXPECT_NE(refusal("gravity = 9.81 m/s^2\n").find("gravity"), std::string::npos);
+  for (const std::string key : {"gnss_uere_horizontal = 0.025", "gnss_lever_arm_z = 0.5"}) {
+    const std::string why = refusal(key + "\n");
+    EXPECT_NE(why.find(key.substr(0, key.find(' '))), std::string::npos) << why;
+    EXPECT_NE(why.find("use_gnss"), std::string::npos) << why;
+    EXPECT_EQ(refusal(key + "\nuse_gnss = true\n"), "");
+  }
+  const std::string why = refusal("dynamic_handling = remove\nrigid_factors = false\n");
+  EXPECT_NE(why.find("rigid_factors"), std::string::npos) << why;
+  EXPECT_NE(why.find("dynamic_handling = full"), std::string::npos) << why;
+  EXPECT_EQ(refusal("dynamic_handling = full\nrigid_factors = false\n"), "");
+  EXPECT_EQ(refusal("dynamic_handling = remove\n"), "");
+}

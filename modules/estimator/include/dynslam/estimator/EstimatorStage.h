@@ -26,6 +26,7 @@
 // estimator's body frame is the IMU's; its camera extrinsic is T_imu_camera =
 // T_body_imu^-1 T_body_camera from the rawlog's sensor poses. Without an IMU (e.g. 7-Scenes,
 // TUM's accelerometer-only IMU) it stays RGB-D only.
+#include <dynslam/core/Options.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/estimator/FeatureRouting.h>
 #include <dynslam/estimator/ImuInitializer.h>
@@ -34,8 +35,6 @@
 #include <dynslam/estimator/ObjectTrajectories.h>
 #include <dynslam/estimator/SlidingWindow.h>
 
-#include <mrpt/config/CLoadableOptions.h>
-
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,43 +42,44 @@
 
 namespace dynslam::estimator {
 
-struct EstimatorOptions : mrpt::config::CLoadableOptions {
+/// [Estimator]: every key, its range and meaning in describe() (EstimatorOptions.cpp).
+struct EstimatorOptions : core::Options {
   SlidingWindowParams window;
   KeyframeSelectorParams keyframes;
   DynamicHandling dynamic_handling = DynamicHandling::Full;
-  bool nonrigid_factors = true;  ///< with full: r_D for NonRigid features (Table 9 ablation)
-  bool rigid_factors = true;     ///< with full: r_O / r_om for Rigid features (Table 9 ablation)
-  /// With full and an IMU: no r_D / r_O / r_om until the IMU initialization succeeds; the
-  /// moving features are dropped meanwhile (not in method.md, which does not speak of
-  /// start-up). In the visual-only start-up window the objects' motion models pulled the
-  /// camera: indoor_people_low seed 2, full 0.0197 m against them dropped 0.0119 (a 9 cm excursion
-  /// at 0.8-1.2 s); with this 0.0120, other seeds and indoor_people_high's 18 unchanged.
+  bool nonrigid_factors = true;
+  bool rigid_factors = true;
+  /// No r_D / r_O / r_om until the IMU initialization succeeds (the moving features are dropped
+  /// meanwhile; method.md does not speak of start-up). In the visual-only start-up window the
+  /// objects' motion models pulled the camera: indoor_people_low seed 2, full 0.0197 m against
+  /// them dropped 0.0119 (a 9 cm excursion at 0.8-1.2 s); with this 0.0120, other seeds and
+  /// indoor_people_high's 18 unchanged.
   bool object_factors_wait_for_imu = true;
-  /// A feature classified as moving takes its static landmark out of the window: its earlier
-  /// observations came from frames in which it was not known to move (a walker entering the
-  /// view undetected, a detector miss).
+  /// Its earlier observations came from frames in which the feature was not known to move (a
+  /// walker entering the view undetected, a detector miss).
   bool drop_moving_landmarks = true;
-  bool use_imu = true;  ///< use the IMU when the frames carry gyro + accelerometer samples
+  bool use_imu = true;
   ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
   double pnp_threshold_px = 3.0;
-  /// A PnP pose farther than this from the constant-velocity prediction is taken for a wrong
-  /// RANSAC consensus and not used (m, deg).
+  /// Farther from the constant-velocity prediction: a wrong RANSAC consensus.
   double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
-  /// With the window visual-inertial, a PnP pose farther than this from the IMU's prediction
-  /// is not used and the prediction is the frame's pose (m, deg; 0: off, the looser bound above
-  /// only; not the method). See PnpPoseGate (FramePoseTracker.h).
+  /// See PnpPoseGate (FramePoseTracker.h).
   double pnp_max_imu_correction_m = 0.0, pnp_max_imu_correction_deg = 0.0;
-  /// Failure detection: estimates beyond these restart the window (m/s, rad/s, m/s^2).
+  /// Failure detection: estimates beyond these restart the window.
   double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
-  int min_keyframe_features = 15;  ///< fewer static features: no keyframe, the pose is predicted
-  /// GNSS position factors (GnssAnchor; lever arm in window.gnss_lever_arm), when the frames
-  /// carry fixes.
-  bool use_gnss = false;
+  int min_keyframe_features = 15;
+  bool use_gnss = false;  ///< GnssAnchor; the lever arm is window.gnss_lever_arm
   GnssAnchorParams gnss;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
+
+ private:
+  void describeWindow(core::OptionVisitor& v);
+  void describeFrames(core::OptionVisitor& v);  // keyframes, PnP
+  void describeImu(core::OptionVisitor& v);
+  void describeDynamics(core::OptionVisitor& v);
+  void describeGnss(core::OptionVisitor& v);
 };
 
 class EstimatorStage : public core::Stage {
