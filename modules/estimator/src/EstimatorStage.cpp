@@ -127,10 +127,10 @@ void EstimatorStage::process(core::Frame& frame) {
     const auto tracked =
         trackFramePose(camera, window_->landmarkPositions(), pixels, predicted * T_ic, pnp);
     // Near the motion prediction, or near the last pose: the constant-velocity prediction
-    // extrapolates one bad step frame after frame (indoor_people_low, detector seed 2: a 0.15 m
-    // step at frame 3 became 4.5 m/s, every PnP pose after it was refused as too far from the
-    // prediction and the window restarted 160 times), while the PnP pose against the window's
-    // own map stays right. With an IMU prediction and pnp_max_imu_correction_* set, near it.
+    // extrapolates one bad step frame after frame, and refusing every PnP pose as too far from
+    // it restarted the window over and over, while the PnP pose against the window's own map
+    // stays right (docs/notes/estimator.md, 2026-11-28 (PnP pose near the last pose)). With an
+    // IMU prediction and pnp_max_imu_correction_* set, near it.
     const std::optional<Eigen::Isometry3d> trackedBody =
         tracked ? std::optional(tracked->T_world_camera * T_ic.inverse()) : std::nullopt;
     const PnpPoseGate gate{options_.pnp_max_correction_m, options_.pnp_max_correction_deg,

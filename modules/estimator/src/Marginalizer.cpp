@@ -68,8 +68,7 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
 
   // H = sum J^T J and g = sum J^T r, accumulated block by block: each factor's Jacobian spans
   // only its own blocks (a few columns of the m + n), and a dense product over all the columns
-  // made this the estimator's largest cost with 300 features (53 ms per keyframe on
-  // outdoor_street_high, where the Schur complement below takes 4).
+  // made this the estimator's largest cost (docs/notes/estimator.md, 2026-11-28 (sums)).
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + n, m + n);
   Eigen::VectorXd g = Eigen::VectorXd::Zero(m + n);
   struct Span {

@@ -225,9 +225,8 @@ SolveReport SlidingWindow::addKeyframe(const KeyframeInput& input) {
   poseToBlock(input.T_world_body, k.pose);
   // A visual-inertial keyframe without a preintegration (the IMU stream had a gap): no IMU
   // factor ties its velocity to the previous keyframe's, and the iteration-capped solves move a
-  // wrong start slowly (after a 1 s gap the stage's prediction gave 0 m/s, and 1 s later the
-  // window's velocity was 0.26 of 0.47 m/s; 20 black frames then left the pose to an IMU
-  // prediction 0.2 m off). Its mean velocity since the previous keyframe is the start.
+  // wrong start slowly (docs/notes/estimator.md, 2026-11-28 (IMU gap)). Its mean velocity since
+  // the previous keyframe is the start.
   Eigen::Vector3d velocity = input.velocity;
   if (params_.use_imu && !input.preintegration && !keyframes_.empty()) {
     const Keyframe& previous = keyframes_.back();

@@ -477,9 +477,8 @@ double scaleError(bool transferredDepth, double pixelNoise, double depthNoise, u
 // Exact pixels and depths: the window keeps the scale (a formulation error would show here).
 // With noise, the depth measured in later keyframes (transferred_depth, the default) keeps it
 // too on average; without it the depth at the first observation alone leaves the scale to the
-// noise. Means over seeds 1-4 (printed), 2026-11-24: with it, 1 px -0.06 %, depth 0.003 z^2
-// +0.05 % (one seed's spread 0.2-0.4 %); without, +0.67 % and -0.37 %. So the simulator's paths
-// coming out 0.2-0.45 % short with it (README "Estimator") is not the factor's own bias.
+// noise. The means over seeds 1-4 are printed (docs/notes/estimator.md, 2026-11-28
+// (transferred_depth and the scale)).
 TEST(SlidingWindow, KeepsTheScaleOnExactDataAndOnAverageUnderNoise) {
   EXPECT_LT(std::abs(scaleError(true, 0.0, 0.0)), 1e-4);
   EXPECT_LT(std::abs(scaleError(false, 0.0, 0.0)), 1e-4);
@@ -487,7 +486,7 @@ TEST(SlidingWindow, KeepsTheScaleOnExactDataAndOnAverageUnderNoise) {
     double mean = 0, meanWithout = 0;
     for (unsigned seed = 1; seed <= 4; ++seed) {
       mean += scaleError(true, pixel, depth, seed) / 4;
-      meanWithout += scaleError(false, pixel, depth, seed) / 4;  // printed, for the README
+      meanWithout += scaleError(false, pixel, depth, seed) / 4;  // printed
     }
     std::printf(
         "%.1f px, depth %.3f z^2: mean scale error %+.3f %% with transferred_depth, "

@@ -6,26 +6,18 @@
 // PnP against the window's landmarks. It also carries the tracked objects' rigid point sets
 // into world trajectories (ObjectTrajectories: Frame::object_poses).
 //
-// Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9;
-// FeatureRouting.h):
-//   none   - every feature, whatever its class (no dynamic handling, like VINS-Mono);
-//   remove - only Static features off the detected objects (people and cars masked out whether
-//            they move or not, like Dynamic-VINS);
-//   full   - the paper (the default): Static features as landmarks, a standing person's and a
-//            parked car's among them, with nonrigid_factors the NonRigid
-//            features as constant-velocity world points (r_D), with rigid_factors the Rigid
-//            features as points of their object, whose poses the window estimates (r_O, r_om;
-//            those estimates then give Frame::object_poses at keyframes).
+// Which features constrain the camera, and how, is dynamic_handling (the paper and its Table 9
+// baselines): FeatureRouting.h.
 //
 // Sensors: RGB-D, and the IMU when the frames carry gyro + accelerometer samples and use_imu is
 // on. The window starts from RGB-D alone (a constant-motion prior ties consecutive keyframes,
 // world = the first frame's IMU frame); once it is full, the IMU initialization (ImuInitializer)
 // is tried at every keyframe until it succeeds (and only while every keyframe of the window saw
 // enough), and the window turns visual-inertial (gravity as found in the unchanged world, IMU
-// factors, frames between keyframes predicted by the IMU). The
-// estimator's body frame is the IMU's; its camera extrinsic is T_imu_camera =
-// T_body_imu^-1 T_body_camera from the rawlog's sensor poses. Without an IMU (e.g. 7-Scenes,
-// TUM's accelerometer-only IMU) it stays RGB-D only.
+// factors, frames between keyframes predicted by the IMU). The estimator's body frame is the
+// IMU's; its camera extrinsic is T_imu_camera = T_body_imu^-1 T_body_camera from the rawlog's
+// sensor poses. Without an IMU (e.g. 7-Scenes, TUM's accelerometer-only IMU) it stays RGB-D
+// only.
 #include <dynslam/core/Options.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/estimator/FeatureRouting.h>
@@ -49,13 +41,11 @@ struct EstimatorOptions : core::Options {
   DynamicHandling dynamic_handling = DynamicHandling::Full;
   bool nonrigid_factors = true;
   bool rigid_factors = true;
-  /// No r_D / r_O / r_om until the IMU initialization succeeds (the moving features are dropped
-  /// meanwhile; method.md does not speak of start-up). In the visual-only start-up window the
-  /// objects' motion models pulled the camera: indoor_people_low seed 2, full 0.0197 m against
-  /// them dropped 0.0119 (a 9 cm excursion at 0.8-1.2 s); with this 0.0120, other seeds and
-  /// indoor_people_high's 18 unchanged.
+  /// No r_D / r_O / r_om until the IMU initialization succeeds (method.md does not speak of
+  /// start-up): in the visual-only start-up window the objects' motion models pulled the camera
+  /// (docs/notes/estimator.md, 2026-11-28 (object_factors_wait_for_imu)).
   bool object_factors_wait_for_imu = true;
-  /// Its earlier observations came from frames in which the feature was not known to move (a
+  /// Why: a moving feature's landmark was made from frames in which it was not known to move (a
   /// walker entering the view undetected, a detector miss).
   bool drop_moving_landmarks = true;
   bool use_imu = true;
