@@ -92,6 +92,45 @@ class EstimatorStage : public core::Stage {
   const EstimatorOptions& options() const { return options_; }
 
  private:
+  /// What a keyframe is made from besides the routed features.
+  struct KeyframeContext {
+    KeyframeSelector::Reason reason;
+    int shared = 0;               ///< features shared with the last keyframe
+    Eigen::Isometry3d T_ic;       ///< camera in the body (IMU) frame
+    Eigen::Vector3d velocity;     ///< the prediction's (IMU) or zero
+  };
+  /// What a keyframe left for the frame's output.
+  struct KeyframeOutcome {
+    bool restarted = false;
+    std::vector<std::pair<int, Eigen::Isometry3d>> objects;  ///< the window's object poses
+  };
+
+  // process(), phase by phase.
+  /// Creates the IMU and GNSS inputs once their data appears, and hands them the frame's.
+  void takeSensorData(const core::Frame& frame);
+  /// routeFeatures() as configured; drops the moving features' landmarks from the window.
+  RoutedFeatures routeFrameFeatures(const core::Frame& frame);
+  /// The frame's body pose: the PnP pose against the window's landmarks when it passes the
+  /// gates, else the prediction. Starts the window on the first frame.
+  Eigen::Isometry3d trackBody(const core::Frame& frame,
+                              const std::map<std::int64_t, Eigen::Vector2d>& pixels,
+                              const Eigen::Isometry3d& T_ic, Eigen::Vector3d& velocity);
+  /// Whether the frame makes a keyframe (NotKeyframe when it sees too little).
+  KeyframeSelector::Reason keyframeReason(double t, const RoutedFeatures& routed, int* shared);
+  /// Adds the keyframe, solves, detects a failure (and restarts) or tries the IMU
+  /// initialization; T_wb becomes the body pose to write. Sets frame.keyframe.
+  KeyframeOutcome makeKeyframe(core::Frame& frame, RoutedFeatures& routed,
+                               const KeyframeContext& context, Eigen::Isometry3d& T_wb);
+  KeyframeInput keyframeInput(const core::Frame& frame, RoutedFeatures& routed,
+                              const Eigen::Isometry3d& T_wb, const KeyframeContext& context);
+  /// Marks a usable solve unusable when its newest keyframe is not plausible.
+  void detectFailure(SolveReport& report, const Eigen::Isometry3d& tracked) const;
+  void restartWindow(const core::Frame& frame, KeyframeInput& in, const Eigen::Isometry3d& T_wb,
+                     const std::map<std::int64_t, Eigen::Vector2d>& pixels);
+  /// Frame::T_world_camera and the objects' poses; the motion model's last poses.
+  void writePose(core::Frame& frame, Eigen::Isometry3d T_wb, const Eigen::Isometry3d& T_ic,
+                 const KeyframeOutcome& keyframe);
+
   void startWindow(const core::Frame& frame);
   /// The body pose this frame is expected at: IMU propagation from the last keyframe when the
   /// window is visual-inertial, else constant velocity from the last two frames.

@@ -207,7 +207,8 @@ class SlidingWindow {
   };
   class ProblemBuilder;
 
-  SolveReport solve();
+  SolveReport solve();  // SlidingWindowProblem.cpp
+  void repropagatePreintegrations();
   void marginalizeOldest();
   Eigen::Vector3d landmarkWorld(const Landmark& l) const;
   /// Depth of a world point in keyframe `k`'s camera, at the current estimate.
