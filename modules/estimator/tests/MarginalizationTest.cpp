@@ -178,7 +178,8 @@ TEST(Marginalizer, MarginalisingTheOldestStateKeepsTheSolution) {
   State kept[3] = {full[0], full[1], full[2]};
   graph.solveWithoutTheFirst(kept);
   for (int k = 1; k < 3; ++k) {
-    for (int i = 0; i < 7; ++i) EXPECT_NEAR(kept[k].pose[i], full[k].pose[i], 1e-6) << k << "," << i;
+    for (int i = 0; i < 7; ++i)
+      EXPECT_NEAR(kept[k].pose[i], full[k].pose[i], 1e-6) << k << "," << i;
     for (int i = 0; i < 9; ++i)
       EXPECT_NEAR(kept[k].speedBias[i], full[k].speedBias[i], 1e-5) << k << "," << i;
   }

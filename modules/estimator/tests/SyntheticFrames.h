@@ -7,7 +7,6 @@
 // world (its first frame's body frame) is the truth's. Optionally a walker: points on a box
 // crossing the view, on object 1, of a given feature class.
 #include <dynslam/core/Frame.h>
-#include <dynslam/estimator/StateBlocks.h>
 #include <dynslam/testing/SyntheticRoom.h>
 
 #include <Eigen/Geometry>
@@ -25,6 +24,9 @@ namespace dynslam::estimator::testing {
 struct RoomPath {
   static Eigen::Vector3d position(double t) {
     return {0.3 * std::sin(1.2 * t), 0.08 * std::sin(1.7 * t), 0.25 * std::sin(0.9 * t)};
+  }
+  static Eigen::Vector3d velocity(double t) {
+    return {0.36 * std::cos(1.2 * t), 0.136 * std::cos(1.7 * t), 0.225 * std::cos(0.9 * t)};
   }
   static Eigen::Vector3d acceleration(double t) {
     return {-0.432 * std::sin(1.2 * t), -0.2312 * std::sin(1.7 * t),
