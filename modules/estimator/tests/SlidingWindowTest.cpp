@@ -79,10 +79,12 @@ std::shared_ptr<ImuPreintegration> preintegrate(double t0, double t1) {
   return pre;
 }
 
-/// A 5-keyframe window (marginalisation runs many times) on the test motion's gravity.
+/// A 5-keyframe window (marginalisation runs many times) on the test motion's gravity, as the
+/// method has it: without an IMU no gyro factor (gyro_rotation_sigma 0).
 SlidingWindowParams fiveKeyframes(bool useImu) {
   SlidingWindowParams params;
   params.window_size = 5;
+  params.gyro_rotation_sigma = 0;
   params.use_imu = useImu;
   params.gravity = kTestGravity;
   return params;

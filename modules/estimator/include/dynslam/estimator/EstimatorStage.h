@@ -54,8 +54,9 @@ struct EstimatorOptions : core::Options {
   double pnp_threshold_px = 3.0;
   /// Farther from the constant-velocity prediction: a wrong RANSAC consensus.
   double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
-  /// See PnpPoseGate (FramePoseTracker.h).
-  double pnp_max_imu_correction_m = 0.0, pnp_max_imu_correction_deg = 0.0;
+  /// PnpPoseGate (FramePoseTracker.h). Not the method (0: off); measured gain:
+  /// docs/notes/estimator.md, 2026-11-28 (pnp_max_imu_correction).
+  double pnp_max_imu_correction_m = 0.05, pnp_max_imu_correction_deg = 3.0;
   /// Failure detection: estimates beyond these restart the window.
   double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
   int min_keyframe_features = 15;

@@ -76,8 +76,9 @@ struct SlidingWindowParams {
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< world gravity of the IMU factors
   double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
   /// > 0: while the window has no IMU factors but the keyframes carry preintegrations (IMU not
-  /// yet initialized, or a restart), GyroRotationFactor between consecutive keyframes.
-  double gyro_rotation_sigma = 0;
+  /// yet initialized, or a restart), GyroRotationFactor between consecutive keyframes. Not the
+  /// method (0); why and measured gain: docs/notes/estimator.md, 2026-11-28 (gyro_rotation_sigma).
+  double gyro_rotation_sigma = 0.001;
   double object_motion_sigma_translation = 0.05, object_motion_sigma_rotation = 0.05;
   Eigen::Vector3d gnss_lever_arm = Eigen::Vector3d::Zero();
   double gnss_huber_sigmas = 3.0;
