@@ -26,8 +26,6 @@ void EstimatorOptions::describeWindow(core::OptionVisitor& v) {
         "Ceres iterations per keyframe solve");
   v.key("max_solver_time", w.max_solver_time_s, positive,
         "s; Ceres wall-time limit per keyframe solve");
-  v.key("solver_threads", w.solver_threads, Range::atLeast(1),
-        "Ceres threads; 1 keeps runs repeatable (2: faster, results vary run to run)");
   v.key("line_search_steps", w.line_search_steps, off,
         "steps of Ceres's projected line search after each step of a bounded problem (Ceres: "
         "20); 0: the step is only projected onto the bounds");

@@ -254,7 +254,9 @@ SolveReport SlidingWindow::solve() {
   solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   solver.max_num_iterations = params_.max_iterations;
   solver.max_solver_time_in_seconds = params_.max_solver_time_s;
-  solver.num_threads = params_.solver_threads;
+  // One thread (Ceres's default): with more the Schur sums' order varies, and the tiny
+  // differences change later keyframe and restart decisions (docs/notes/estimator.md,
+  // 2026-11-28 (solver_threads)).
   solver.max_num_line_search_step_size_iterations = params_.line_search_steps;
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);

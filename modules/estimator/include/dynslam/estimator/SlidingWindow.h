@@ -58,10 +58,6 @@ struct SlidingWindowParams {
   /// docs/notes/estimator.md, 2026-11-28 (max_iterations)).
   int max_iterations = 4;
   double max_solver_time_s = 0.05;
-  /// 1 keeps runs repeatable: with more the Schur sums' order varies, and the tiny differences
-  /// change later keyframe and restart decisions (docs/notes/estimator.md, 2026-11-28
-  /// (solver_threads)).
-  int solver_threads = 1;
   /// Ceres runs its projected line search on any problem with bounds (ours: inverse depths
   /// >= 1e-3), and each of its steps evaluates the gradient again; with 0 a step is only
   /// projected onto the bounds, as accurate and faster (docs/notes/estimator.md, 2026-11-28
