@@ -34,7 +34,8 @@ void EstimatorOptions::describeWindow(core::OptionVisitor& v) {
   v.key("depth_sigma_a", w.depth_noise.a, positive, "m; depth noise sigma_d = a + b d^2");
   v.key("depth_sigma_b", w.depth_noise.b, off, "1/m; depth noise sigma_d = a + b d^2");
   v.key("transferred_depth", w.transferred_depth,
-        "depth measured in later keyframes constrains them too");
+        "depth measured in later keyframes constrains them too (not the method: the first "
+        "observation's only)");
   v.key("motion_prior_sigma_translation", w.motion_prior_sigma_translation, positive,
         "m per keyframe interval; RGB-D-only constant-motion prior");
   v.key("motion_prior_sigma_rotation", w.motion_prior_sigma_rotation, positive,
@@ -61,15 +62,18 @@ void EstimatorOptions::describeFrames(core::OptionVisitor& v) {
         "PnP inliers needed to track a frame");
   v.key("pnp_threshold_px", pnp_threshold_px, positive, "px; PnP RANSAC reprojection threshold");
   v.key("pnp_max_correction_m", pnp_max_correction_m, positive,
-        "m; a PnP pose farther than this from the motion prediction is rejected");
+        "m; a PnP pose farther than this from the motion prediction and from the last pose is "
+        "rejected (not the method)");
   v.key("pnp_max_correction_deg", pnp_max_correction_deg, positive,
-        "deg; a PnP pose turned more than this from the motion prediction is rejected");
+        "deg; the same for the rotation (not the method)");
   v.key("pnp_max_imu_correction_m", pnp_max_imu_correction_m, off,
-        "m; visual-inertial: a PnP pose farther from the IMU prediction is not used (0: off)");
+        "m; visual-inertial: a PnP pose farther from the IMU prediction is not used (not the "
+        "method; 0: off)");
   v.key("pnp_max_imu_correction_deg", pnp_max_imu_correction_deg, off,
-        "deg; the same for the rotation (0: off)");
+        "deg; the same for the rotation (not the method; 0: off)");
   v.key("min_keyframe_features", min_keyframe_features, off,
-        "a frame with fewer static features makes no keyframe (its pose is predicted)");
+        "a frame with fewer static features makes no keyframe, its pose is predicted (not the "
+        "method; 0: off)");
 }
 
 void EstimatorOptions::describeImu(core::OptionVisitor& v) {
@@ -101,7 +105,8 @@ void EstimatorOptions::describeDynamics(core::OptionVisitor& v) {
         "Static features on objects kept (see nonrigid_factors, rigid_factors)");
   v.key("drop_moving_landmarks", drop_moving_landmarks,
         "a feature classified as moving (with remove also a still one on a detected object) "
-        "takes its static landmark, with every observation, out of the window (not with none)");
+        "takes its static landmark, with every observation, out of the window (not with none; "
+        "not the method)");
   v.key("nonrigid_factors", nonrigid_factors,
         "NonRigid features as constant-velocity world points (r_D); false: dropped (Table 9)");
   v.key("rigid_factors", rigid_factors,
