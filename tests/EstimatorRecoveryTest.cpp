@@ -1,9 +1,9 @@
 // The whole system keeps its footing through a bad early step: on indoor_people_low with the
-// ground-truth detector's seed 2, an early PnP step of 0.15 m was extrapolated by the
-// constant-velocity motion model (4.5 m/s), every PnP pose after it was refused as too far from
-// that prediction, and the window restarted every keyframe (14 times in the first two seconds,
-// 160 in twenty; APE 6.8 m). The PnP pose is now taken when it is near the last pose too, and a
-// restart starts the motion model from rest.
+// ground-truth detector's seed 2, an early PnP step was extrapolated by the constant-velocity
+// motion model, every PnP pose after it was refused as too far from that prediction, and the
+// window restarted every keyframe (docs/notes/estimator.md, 2026-11-28 (PnP pose near the last
+// pose)). The PnP pose is taken when it is near the last pose too, and a restart starts the
+// motion model from rest.
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>

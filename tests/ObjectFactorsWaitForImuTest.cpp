@@ -1,9 +1,9 @@
 // With dynamic_handling = full and an IMU, the object factors (r_D, r_O, r_om) start once the
 // IMU initialization succeeds ([Estimator] object_factors_wait_for_imu, default on; not in
 // method.md): in the visual-only start-up window the objects' motion models pulled the camera
-// (indoor_people_low seed 2: full 0.0197 m against remove 0.0119 m, a 9 cm excursion before the
-// IMU was initialized). keyframes.csv says, per keyframe, whether the window was visual-inertial
-// and how many non-rigid features and rigid objects it held.
+// (docs/notes/estimator.md, 2026-11-28 (object_factors_wait_for_imu)). keyframes.csv says, per
+// keyframe, whether the window was visual-inertial and how many non-rigid features and rigid
+// objects it held.
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>

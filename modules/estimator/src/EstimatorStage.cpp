@@ -14,21 +14,7 @@ EstimatorStage::EstimatorStage() = default;
 EstimatorStage::~EstimatorStage() = default;
 
 void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& section) {
-  try {
-    core::loadOptionsStrict(options_, cfg, section);
-  } catch (const std::invalid_argument& e) {
-    throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
-  }
-  const auto& w = options_.window;
-  if (w.window_size < 2 || w.max_iterations < 1 || !(w.max_solver_time_s > 0) ||
-      w.solver_threads < 1 || w.line_search_steps < 0 || !(w.pixel_sigma > 0) ||
-      !(w.huber_sigmas > 0) || options_.min_pnp_inliers < 4 ||
-      !(options_.pnp_max_imu_correction_m >= 0) || !(options_.pnp_max_imu_correction_deg >= 0))
-    throw core::ConfigError(
-        "[" + section + "] in " + cfg.source() +
-        ": window_size >= 2, max_iterations >= 1, solver_threads >= 1, "
-        "line_search_steps >= 0, min_pnp_inliers >= 4, pnp_max_imu_correction_m/_deg >= 0 and "
-        "positive max_solver_time, pixel_sigma, huber_sigmas are required");
+  core::loadOptionsStrict(options_, cfg, section);
   selector_ = KeyframeSelector(options_.keyframes);
 }
 
@@ -38,7 +24,8 @@ void EstimatorStage::startWindow(const core::Frame& frame) {
     throw std::runtime_error("Estimator: frame " + std::to_string(frame.index) +
                              " has no camera intrinsics");
   SlidingWindowParams params = options_.window;
-  params.use_imu = false;  // until the IMU initialization succeeds
+  params.use_imu = false;  // until the IMU initialization succeeds, which finds the gravity
+  params.gravity = Eigen::Vector3d(0, 0, -options_.imu_init.gravity_magnitude);
   window_ = std::make_unique<SlidingWindow>(params, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
                                             frame.T_body_imu.inverse() * frame.T_body_camera);
   selector_ = KeyframeSelector(options_.keyframes);
@@ -84,7 +71,7 @@ void EstimatorStage::tryImuInitialization(double t) {
   if (!imu_ || window_->usesImu() || int(window_->size()) < options_.window.window_size) return;
   // The alignment trusts the visual poses: not while the window holds keyframes that saw too
   // little (black or featureless frames, whose poses are only predictions).
-  for (const std::size_t n : window_features_)
+  for (const std::size_t n : window_->featureCounts())
     if (int(n) < options_.keyframes.min_shared) return;
   std::vector<ImuInitKeyframe> keyframes;
   std::vector<ImuPreintegration*> preintegrations;
@@ -108,26 +95,46 @@ void EstimatorStage::tryImuInitialization(double t) {
 
 void EstimatorStage::process(core::Frame& frame) {
   if (frames_++ == 0) first_t_ = frame.t;
+  takeSensorData(frame);
+  RoutedFeatures routed = routeFrameFeatures(frame);
+  const Eigen::Isometry3d T_ic = frame.T_body_imu.inverse() * frame.T_body_camera;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Isometry3d T_wb = trackBody(frame, routed.pixels, T_ic, velocity);
+  KeyframeOutcome keyframe;
+  int shared = 0;
+  const KeyframeSelector::Reason reason = keyframeReason(frame.t, routed, &shared);
+  if (reason != KeyframeSelector::Reason::NotKeyframe)
+    keyframe = makeKeyframe(frame, routed, {reason, shared, T_ic, velocity}, T_wb);
+  anchorToGnss(frame.t);
+  writePose(frame, T_wb, T_ic, keyframe);
+}
+
+void EstimatorStage::takeSensorData(const core::Frame& frame) {
   if (options_.use_imu && !imu_) {
     for (const auto& s : frame.imu)
       if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
   }
   if (imu_) imu_->addSamples(frame.imu, frame.index);
+  if (options_.use_gnss && !gnss_ && !frame.gnss.empty())
+    gnss_ = std::make_unique<GnssAnchor>(options_.gnss);
+  if (gnss_) gnss_->addFixes(frame.gnss);
+}
+
+RoutedFeatures EstimatorStage::routeFrameFeatures(const core::Frame& frame) {
   const bool objectFactors =
       !(options_.object_factors_wait_for_imu && imu_ && !(window_ && window_->usesImu()));
   RoutedFeatures routed = routeFeatures(frame.features, options_.dynamic_handling,
                                         objectFactors && options_.nonrigid_factors,
                                         objectFactors && options_.rigid_factors);
-  std::vector<FeatureObservation>& observations = routed.landmarks;
-  const std::map<std::int64_t, Eigen::Vector2d>& pixels = routed.pixels;
   if (window_ && options_.drop_moving_landmarks)
     landmarks_dropped_ += window_->dropLandmarks(routed.not_landmarks);
-  if (options_.use_gnss && !gnss_ && !frame.gnss.empty())
-    gnss_ = std::make_unique<GnssAnchor>(options_.gnss);
-  if (gnss_) gnss_->addFixes(frame.gnss);
-  const Eigen::Isometry3d T_ic = frame.T_body_imu.inverse() * frame.T_body_camera;
+  return routed;
+}
 
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+Eigen::Isometry3d EstimatorStage::trackBody(const core::Frame& frame,
+                                            const std::map<std::int64_t, Eigen::Vector2d>& pixels,
+                                            const Eigen::Isometry3d& T_ic,
+                                            Eigen::Vector3d& velocity) {
   bool predictedByImu = false;
   const Eigen::Isometry3d predicted = predictBody(frame.t, &velocity, &predictedByImu);
   Eigen::Isometry3d T_wb = predicted;
@@ -140,10 +147,10 @@ void EstimatorStage::process(core::Frame& frame) {
     const auto tracked =
         trackFramePose(camera, window_->landmarkPositions(), pixels, predicted * T_ic, pnp);
     // Near the motion prediction, or near the last pose: the constant-velocity prediction
-    // extrapolates one bad step frame after frame (indoor_people_low, detector seed 2: a 0.15 m
-    // step at frame 3 became 4.5 m/s, every PnP pose after it was refused as too far from the
-    // prediction and the window restarted 160 times), while the PnP pose against the window's
-    // own map stays right. With an IMU prediction and pnp_max_imu_correction_* set, near it.
+    // extrapolates one bad step frame after frame, and refusing every PnP pose as too far from
+    // it restarted the window over and over, while the PnP pose against the window's own map
+    // stays right (docs/notes/estimator.md, 2026-11-28 (PnP pose near the last pose)). With an
+    // IMU prediction and pnp_max_imu_correction_* set, near it.
     const std::optional<Eigen::Isometry3d> trackedBody =
         tracked ? std::optional(tracked->T_world_camera * T_ic.inverse()) : std::nullopt;
     const PnpPoseGate gate{options_.pnp_max_correction_m, options_.pnp_max_correction_deg,
@@ -153,108 +160,136 @@ void EstimatorStage::process(core::Frame& frame) {
     else
       ++pnp_failures_;
   }
-
   if (!T_wb.matrix().allFinite()) T_wb = last_body_ ? *last_body_ : Eigen::Isometry3d::Identity();
+  return T_wb;
+}
+
+KeyframeSelector::Reason EstimatorStage::keyframeReason(double t, const RoutedFeatures& routed,
+                                                        int* shared) {
   // A frame that sees almost nothing (black, blurred, a wall) makes no keyframe: its pose is
   // the prediction, and the window waits for frames it can constrain.
-  const bool seesEnough = window_->empty() || int(observations.size()) >= options_.min_keyframe_features;
-  if (!seesEnough) ++blind_frames_;
-  std::vector<std::pair<int, Eigen::Isometry3d>> estimatedObjects;  // the window's, at a keyframe
-  bool restarted = false;
-  int shared = 0;
-  const KeyframeSelector::Reason reason = seesEnough ? selector_.decide(frame.t, pixels, &shared)
-                                                     : KeyframeSelector::Reason::NotKeyframe;
-  if (reason != KeyframeSelector::Reason::NotKeyframe) {
-    core::KeyframeRecord record;
-    record.reason = KeyframeSelector::name(reason);
-    record.static_features = int(observations.size());
-    record.shared_features = shared;
-    record.nonrigid_features = int(routed.nonrigid.size());
-    KeyframeInput in;
-    in.t = frame.t;
-    in.T_world_body = T_wb;
-    in.velocity = velocity;
-    in.features = std::move(observations);
-    nonrigid_observations_ += routed.nonrigid.size();
-    in.nonrigid_features = std::move(routed.nonrigid);
-    // An object new to the window starts in the frame its trajectory has followed so far.
-    const auto followed = objects_.predict(frame, T_wb * T_ic);
-    for (auto& object : routed.rigid_objects)
-      if (const auto f = followed.find(object.object_id); f != followed.end())
-        object.first_pose_guess = f->second;
-    in.rigid_objects = std::move(routed.rigid_objects);
-    if (imu_)
-      in.preintegration = imu_->cutAt(frame.t,
-                                      window_->empty() ? Eigen::Vector3d::Zero()
-                                                       : window_->latestAccBias(),
-                                      window_->empty() ? Eigen::Vector3d::Zero()
-                                                       : window_->latestGyroBias());
-    SolveReport report = window_->addKeyframe(in);
-    record.solve_ms = report.solve_ms;
-    record.iterations = report.iterations;
-    record.rigid_objects = report.rigid_objects;
-    ++keyframes_;
-    solve_ms_.push_back(report.solve_ms);
-    rigid_objects_solved_ += std::size_t(report.rigid_objects);
-    // Failure detection: a solve that fails, or moves the new keyframe implausibly far from its
-    // tracked pose, or leaves non-finite states, restarts the window.
-    if (report.usable) {
-      const Eigen::Isometry3d solved = window_->latestPose();
-      const bool finite = solved.matrix().allFinite() && window_->latestVelocity().allFinite();
-      const bool jump = !finite || !plausibleStep(T_wb.inverse() * solved);
-      const bool implausibleImu =
-          window_->usesImu() && (window_->latestVelocity().norm() > options_.max_speed ||
-                                 window_->latestGyroBias().norm() > options_.max_gyro_bias ||
-                                 window_->latestAccBias().norm() > options_.max_acc_bias);
-      if (jump || implausibleImu) {
-        report.usable = false;
-        report.message = jump ? "the keyframe moved implausibly far from its tracked pose"
-                              : "implausible velocity or IMU bias";
-      }
-    }
-    // Whatever failed, the pose to go on from is one that was plausible: the tracked pose when
-    // it was, else the last frame's.
-    if (!report.usable && last_body_ && !plausibleStep(last_body_->inverse() * T_wb))
-      T_wb = *last_body_;
-    if (gnss_) gnss_->keyframeAdded(frame.t);
-    if (report.usable) {
-      T_wb = window_->latestPose();
-      estimatedObjects = window_->latestObjectPoses();
-      selector_.accept(frame.t, pixels);
-      tryImuInitialization(frame.t);
-      if (window_->usesImu()) T_wb = window_->latestPose();
-    } else {
-      // Solver divergence: start again from the last good pose, the trajectory stays continuous
-      // (the new window is RGB-D only until the IMU initializes again).
-      ++resets_;
-      restarted = true;
-      MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed (" << report.message
-                                     << "), window restarted");
-      startWindow(frame);
-      window_features_.assign(1, in.features.size());
-      in.T_world_body = T_wb;
-      in.preintegration = nullptr;
-      window_->addKeyframe(in);
-      selector_.accept(frame.t, pixels);
-    }
-    record.restarted = restarted;
-    record.visual_inertial = window_->usesImu();
-    if (record.visual_inertial) {
-      record.velocity = window_->latestVelocity();
-      record.acc_bias = window_->latestAccBias();
-      record.gyro_bias = window_->latestGyroBias();
-    }
-    frame.keyframe = record;
+  const bool seesEnough =
+      window_->empty() || int(routed.landmarks.size()) >= options_.min_keyframe_features;
+  if (!seesEnough) {
+    ++blind_frames_;
+    return KeyframeSelector::Reason::NotKeyframe;
   }
-  anchorToGnss(frame.t);
-  // A slightly scaled rotation compounded to inf in 6 frames through the motion prediction.
+  return selector_.decide(t, routed.pixels, shared);
+}
+
+EstimatorStage::KeyframeOutcome EstimatorStage::makeKeyframe(core::Frame& frame,
+                                                             RoutedFeatures& routed,
+                                                             const KeyframeContext& context,
+                                                             Eigen::Isometry3d& T_wb) {
+  core::KeyframeRecord record;
+  record.reason = KeyframeSelector::name(context.reason);
+  record.static_features = int(routed.landmarks.size());
+  record.shared_features = context.shared;
+  record.nonrigid_features = int(routed.nonrigid.size());
+  nonrigid_observations_ += routed.nonrigid.size();
+  KeyframeInput in = keyframeInput(frame, routed, T_wb, context);
+  SolveReport report = window_->addKeyframe(in);
+  record.solve_ms = report.solve_ms;
+  record.iterations = report.iterations;
+  record.rigid_objects = report.rigid_objects;
+  ++keyframes_;
+  solve_ms_.push_back(report.solve_ms);
+  rigid_objects_solved_ += std::size_t(report.rigid_objects);
+  detectFailure(report, T_wb);
+  // Whatever failed, the pose to go on from is one that was plausible: the tracked pose when
+  // it was, else the last frame's.
+  if (!report.usable && last_body_ && !plausibleStep(last_body_->inverse() * T_wb))
+    T_wb = *last_body_;
+  if (gnss_) gnss_->keyframeAdded(frame.t);
+  KeyframeOutcome outcome;
+  if (report.usable) {
+    T_wb = window_->latestPose();
+    outcome.objects = window_->latestObjectPoses();
+    selector_.accept(frame.t, routed.pixels);
+    tryImuInitialization(frame.t);
+    if (window_->usesImu()) T_wb = window_->latestPose();
+  } else {
+    MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed (" << report.message
+                                   << "), window restarted");
+    restartWindow(frame, in, T_wb, routed.pixels);
+    outcome.restarted = true;
+  }
+  record.restarted = outcome.restarted;
+  record.visual_inertial = window_->usesImu();
+  if (record.visual_inertial) {
+    record.velocity = window_->latestVelocity();
+    record.acc_bias = window_->latestAccBias();
+    record.gyro_bias = window_->latestGyroBias();
+  }
+  frame.keyframe = record;
+  return outcome;
+}
+
+KeyframeInput EstimatorStage::keyframeInput(const core::Frame& frame, RoutedFeatures& routed,
+                                            const Eigen::Isometry3d& T_wb,
+                                            const KeyframeContext& context) {
+  KeyframeInput in;
+  in.t = frame.t;
+  in.T_world_body = T_wb;
+  in.velocity = context.velocity;
+  in.features = std::move(routed.landmarks);
+  in.nonrigid_features = std::move(routed.nonrigid);
+  // An object new to the window starts in the frame its trajectory has followed so far.
+  const auto followed = objects_.predict(frame, T_wb * context.T_ic);
+  for (auto& object : routed.rigid_objects)
+    if (const auto f = followed.find(object.object_id); f != followed.end())
+      object.first_pose_guess = f->second;
+  in.rigid_objects = std::move(routed.rigid_objects);
+  if (imu_)
+    in.preintegration = imu_->cutAt(frame.t,
+                                    window_->empty() ? Eigen::Vector3d::Zero()
+                                                     : window_->latestAccBias(),
+                                    window_->empty() ? Eigen::Vector3d::Zero()
+                                                     : window_->latestGyroBias());
+  return in;
+}
+
+void EstimatorStage::detectFailure(SolveReport& report, const Eigen::Isometry3d& tracked) const {
+  // A solve that fails, or moves the new keyframe implausibly far from its tracked pose, or
+  // leaves non-finite states or implausible IMU states, restarts the window.
+  if (!report.usable) return;
+  const Eigen::Isometry3d solved = window_->latestPose();
+  const bool finite = solved.matrix().allFinite() && window_->latestVelocity().allFinite();
+  const bool jump = !finite || !plausibleStep(tracked.inverse() * solved);
+  const bool implausibleImu =
+      window_->usesImu() && (window_->latestVelocity().norm() > options_.max_speed ||
+                             window_->latestGyroBias().norm() > options_.max_gyro_bias ||
+                             window_->latestAccBias().norm() > options_.max_acc_bias);
+  if (jump || implausibleImu) {
+    report.usable = false;
+    report.message = jump ? "the keyframe moved implausibly far from its tracked pose"
+                          : "implausible velocity or IMU bias";
+  }
+}
+
+void EstimatorStage::restartWindow(const core::Frame& frame, KeyframeInput& in,
+                                   const Eigen::Isometry3d& T_wb,
+                                   const std::map<std::int64_t, Eigen::Vector2d>& pixels) {
+  // Solver divergence: start again from the last good pose, the trajectory stays continuous
+  // (the new window is RGB-D only until the IMU initializes again).
+  ++resets_;
+  startWindow(frame);
+  in.T_world_body = T_wb;
+  in.preintegration = nullptr;
+  window_->addKeyframe(in);
+  selector_.accept(frame.t, pixels);
+}
+
+void EstimatorStage::writePose(core::Frame& frame, Eigen::Isometry3d T_wb,
+                               const Eigen::Isometry3d& T_ic, const KeyframeOutcome& keyframe) {
+  // A slightly scaled rotation compounds through the motion prediction (to inf within frames).
   T_wb = nearestRigid(T_wb);
   // After a restart the motion model starts from rest: the velocity of the steps that led to
   // the failure is not to be extrapolated into the new window.
-  previous_body_ = restarted ? T_wb : last_body_;
+  previous_body_ = keyframe.restarted ? T_wb : last_body_;
   last_body_ = T_wb;
   frame.T_world_camera = T_wb * T_ic;
-  objects_.update(frame, estimatedObjects);
+  objects_.update(frame, keyframe.objects);
 }
 
 void EstimatorStage::anchorToGnss(double t) {

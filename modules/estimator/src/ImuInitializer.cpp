@@ -172,6 +172,57 @@ std::string checkInput(const std::vector<ImuInitKeyframe>& keyframes,
   return why.str();
 }
 
+/// The excitation measure: RMS over the intervals of the mean world acceleration,
+/// R_i beta / T + g.
+double accelerationRms(const std::vector<ImuInitKeyframe>& keyframes,
+                       const std::vector<ImuPreintegration*>& pre, const Eigen::Vector3d& bg,
+                       const Eigen::Vector3d& gravity) {
+  double sa = 0;
+  for (size_t k = 0; k < pre.size(); ++k) {
+    const Eigen::Vector3d beta = pre[k]->deltaVelocity(pre[k]->linearizedBa(), bg);
+    const Eigen::Vector3d a =
+        keyframes[k].T_world_body.rotation() * beta / pre[k]->sumDt() + gravity;
+    sa += a.squaredNorm();
+  }
+  return std::sqrt(sa / pre.size());
+}
+
+/// The checks of the header on a solved alignment: every one that fails is named, with its
+/// numbers ("" when all pass).
+std::string failedChecks(const ImuInitialization& out, const ImuInitializerOptions& options) {
+  const double G = options.gravity_magnitude;
+  std::ostringstream why;
+  const auto fail = [&why](const std::string& text) {
+    if (why.tellp() > 0) why << "; ";
+    why << text;
+  };
+  const auto num = [](double v) {
+    std::ostringstream s;
+    s.precision(3);
+    s << v;
+    return s.str();
+  };
+  if (std::abs(out.free_gravity_norm - G) > options.max_gravity_norm_error)
+    fail("inconsistent: the free alignment's |g| is " + num(out.free_gravity_norm) +
+         " m/s^2, expected " + num(G) + " +- " + num(options.max_gravity_norm_error) +
+         " (visual scale, time offset or IMU data wrong?)");
+  if (out.position_rms > options.max_position_rms)
+    fail("inconsistent: position residual RMS " + num(out.position_rms) + " m > " +
+         num(options.max_position_rms));
+  if (out.velocity_rms > options.max_velocity_rms)
+    fail("inconsistent: velocity residual RMS " + num(out.velocity_rms) + " m/s > " +
+         num(options.max_velocity_rms));
+  const double scaleError = std::abs(out.visual_scale - 1.0);
+  if (scaleError > options.max_scale_error &&
+      scaleError > options.scale_significance * out.visual_scale_sigma)  // false for NaN
+    fail("inconsistent: the IMU sees the visual positions at scale " + num(out.visual_scale) +
+         " +- " + num(out.visual_scale_sigma) + " (depth scale or units wrong?)");
+  if (out.acceleration_rms < options.min_acceleration_rms)
+    fail("not excited: acceleration RMS " + num(out.acceleration_rms) + " m/s^2 < " +
+         num(options.min_acceleration_rms) + " (still or constant-velocity motion)");
+  return why.str();
+}
+
 }  // namespace
 
 Eigen::Vector3d estimateGyroBias(const std::vector<ImuInitKeyframe>& keyframes,
@@ -243,46 +294,8 @@ ImuInitialization initializeImu(const std::vector<ImuInitKeyframe>& keyframes,
   std::tie(out.visual_scale, out.visual_scale_sigma) =
       estimateVisualScale(keyframes, pre, options.visual_position_noise);
 
-  double sa = 0;
-  for (size_t k = 0; k < pre.size(); ++k) {
-    const Eigen::Vector3d beta = pre[k]->deltaVelocity(pre[k]->linearizedBa(), out.gyro_bias);
-    const Eigen::Vector3d a =
-        keyframes[k].T_world_body.rotation() * beta / pre[k]->sumDt() + out.gravity_world;
-    sa += a.squaredNorm();
-  }
-  out.acceleration_rms = std::sqrt(sa / pre.size());
-
-  // Checks (header): every one that fails is named, with its numbers.
-  std::ostringstream why;
-  const auto fail = [&why](const std::string& text) {
-    if (why.tellp() > 0) why << "; ";
-    why << text;
-  };
-  const auto num = [](double v) {
-    std::ostringstream s;
-    s.precision(3);
-    s << v;
-    return s.str();
-  };
-  if (std::abs(out.free_gravity_norm - G) > options.max_gravity_norm_error)
-    fail("inconsistent: the free alignment's |g| is " + num(out.free_gravity_norm) +
-         " m/s^2, expected " + num(G) + " +- " + num(options.max_gravity_norm_error) +
-         " (visual scale, time offset or IMU data wrong?)");
-  if (out.position_rms > options.max_position_rms)
-    fail("inconsistent: position residual RMS " + num(out.position_rms) + " m > " +
-         num(options.max_position_rms));
-  if (out.velocity_rms > options.max_velocity_rms)
-    fail("inconsistent: velocity residual RMS " + num(out.velocity_rms) + " m/s > " +
-         num(options.max_velocity_rms));
-  const double scaleError = std::abs(out.visual_scale - 1.0);
-  if (scaleError > options.max_scale_error &&
-      scaleError > options.scale_significance * out.visual_scale_sigma)  // false for NaN
-    fail("inconsistent: the IMU sees the visual positions at scale " + num(out.visual_scale) +
-         " +- " + num(out.visual_scale_sigma) + " (depth scale or units wrong?)");
-  if (out.acceleration_rms < options.min_acceleration_rms)
-    fail("not excited: acceleration RMS " + num(out.acceleration_rms) + " m/s^2 < " +
-         num(options.min_acceleration_rms) + " (still or constant-velocity motion)");
-  out.reason = why.str();
+  out.acceleration_rms = accelerationRms(keyframes, pre, out.gyro_bias, out.gravity_world);
+  out.reason = failedChecks(out, options);
   out.success = out.reason.empty();
   return out;
 }

@@ -30,6 +30,63 @@ void applyLoss(const ceres::LossFunction& loss, Eigen::VectorXd& r, Eigen::Matri
   r *= residualScale;
 }
 
+/// The pseudo-inverse of a symmetric matrix: eigenvalues below eps (relative to the largest, at
+/// least 1) are taken as zero.
+Eigen::MatrixXd pseudoInverse(const Eigen::MatrixXd& A, double eps) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
+  const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
+  const Eigen::VectorXd inv =
+      (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
+  return Eigen::MatrixXd(es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose());
+}
+
+/// The staying blocks' information once the leaving ones are eliminated, in Jacobi-scaled
+/// coordinates (x_scaled = D^1/2 x): A dx^2 + 2 b dx.
+struct SchurComplement {
+  Eigen::MatrixXd A;
+  Eigen::VectorXd b;
+  Eigen::VectorXd scale;  ///< D^-1/2 over all m + n columns
+};
+
+/// H and g over the m leaving columns, then the n staying ones.
+SchurComplement eliminateLeaving(Eigen::MatrixXd H, Eigen::VectorXd g, int m, int n, double eps) {
+  // Jacobi scaling: the states' units differ by many orders of magnitude (a bias random walk
+  // between keyframes 33 ms apart carries ~1e11 of information, a position ~1e4), so the
+  // eigenvalue floors below are taken on D^-1/2 H D^-1/2, whose diagonal is one. A floor
+  // relative to the largest eigenvalue of H itself dropped every direction weaker than a
+  // hundred-millionth of the stiffest, e.g. the gyro bias as the window's rotations fix it.
+  const Eigen::VectorXd diagonal = H.diagonal();
+  SchurComplement s;
+  s.scale = (diagonal.array() > 0).select(diagonal.array().rsqrt(), 1.0).matrix();
+  H = s.scale.asDiagonal() * H * s.scale.asDiagonal();
+  g = s.scale.asDiagonal() * g;
+  // Schur complement of the leaving block, with a pseudo-inverse (its information can be
+  // rank-deficient, e.g. an unobserved yaw).
+  const Eigen::MatrixXd Hmm_inv =
+      m > 0 ? pseudoInverse(H.topLeftCorner(m, m), eps) : Eigen::MatrixXd();
+  s.A = H.bottomRightCorner(n, n);
+  s.b = g.tail(n);
+  if (m > 0) {
+    s.A -= H.bottomLeftCorner(n, m) * Hmm_inv * H.topRightCorner(m, n);
+    s.b -= H.bottomLeftCorner(n, m) * Hmm_inv * g.head(m);
+  }
+  return s;
+}
+
+/// A = V S V^T (scaled) -> J = S^1/2 V^T D^1/2, r0 = S^-1/2 V^T b, so that
+/// |J dx + r0|^2 = dx^T A dx + 2 b^T dx + c in the states' own units.
+void squareRootOf(const SchurComplement& s, int n, double eps, Eigen::MatrixXd& J,
+                  Eigen::VectorXd& r0) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (s.A + s.A.transpose()));
+  const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
+  const Eigen::VectorXd S = (es.eigenvalues().array() > floor).select(es.eigenvalues(), 0.0);
+  const Eigen::VectorXd Sinv =
+      (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
+  J = S.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() *
+      s.scale.tail(n).cwiseInverse().asDiagonal();
+  r0 = Sinv.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() * s.b;
+}
+
 }  // namespace
 
 void Marginalizer::addFactor(std::shared_ptr<const ceres::CostFunction> cost,
@@ -39,39 +96,45 @@ void Marginalizer::addFactor(std::shared_ptr<const ceres::CostFunction> cost,
   factors_.push_back({std::move(cost), loss, std::move(blocks)});
 }
 
-Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& leaving,
-                                              double eps) const {
-  // Columns: leaving blocks first, then the staying ones, each in order of first appearance.
+/// The columns of the normal equations: the leaving blocks first, then the staying ones, each
+/// in order of first appearance among the factors.
+struct Marginalizer::Layout {
   struct Column {
     int ambient = 0, tangent = 0, offset = 0;
     bool pose = false;
   };
   std::map<const double*, Column> columns;
   std::vector<double*> order[2];  // [0] leaving, [1] staying
+  int m = 0, n = 0;               // tangent sizes of the leaving and the staying blocks
+};
+
+Marginalizer::Layout Marginalizer::layout(const std::set<const double*>& leaving) const {
+  Layout l;
   for (const auto& f : factors_)
     for (size_t k = 0; k < f.blocks.size(); ++k) {
       double* b = f.blocks[k];
-      if (columns.count(b) || constants_.count(b)) continue;
-      Column c;
+      if (l.columns.count(b) || constants_.count(b)) continue;
+      Layout::Column c;
       c.ambient = f.cost->parameter_block_sizes()[k];
       c.pose = poses_.count(b) > 0;
       c.tangent = c.pose ? kPoseTangentSize : c.ambient;
-      columns[b] = c;
-      order[leaving.count(b) ? 0 : 1].push_back(b);
+      l.columns[b] = c;
+      l.order[leaving.count(b) ? 0 : 1].push_back(b);
     }
-  int m = 0, n = 0;
   for (int side = 0; side < 2; ++side)
-    for (double* b : order[side]) {
-      columns[b].offset = m + n;
-      (side == 0 ? m : n) += columns[b].tangent;
+    for (double* b : l.order[side]) {
+      l.columns[b].offset = l.m + l.n;
+      (side == 0 ? l.m : l.n) += l.columns[b].tangent;
     }
+  return l;
+}
 
+void Marginalizer::accumulate(const Layout& l, Eigen::MatrixXd& H, Eigen::VectorXd& g) const {
   // H = sum J^T J and g = sum J^T r, accumulated block by block: each factor's Jacobian spans
   // only its own blocks (a few columns of the m + n), and a dense product over all the columns
-  // made this the estimator's largest cost with 300 features (53 ms per keyframe on
-  // outdoor_street_high, where the Schur complement below takes 4).
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + n, m + n);
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(m + n);
+  // made this the estimator's largest cost (docs/notes/estimator.md, 2026-11-28 (sums)).
+  H = Eigen::MatrixXd::Zero(l.m + l.n, l.m + l.n);
+  g = Eigen::VectorXd::Zero(l.m + l.n);
   struct Span {
     size_t block = 0;                       // index among the factor's blocks
     int column = 0, width = 0, offset = 0;  // in the factor's compact Jacobian; in H
@@ -91,7 +154,7 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
     int width = 0;
     for (size_t k = 0; k < f.blocks.size(); ++k) {
       if (constants_.count(f.blocks[k])) continue;
-      const Column& c = columns[f.blocks[k]];
+      const Layout::Column& c = l.columns.at(f.blocks[k]);
       spans.push_back({k, width, c.tangent, c.offset});
       width += c.tangent;
     }
@@ -106,49 +169,23 @@ Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& lea
             Ja.transpose() * J.middleCols(b.column, b.width);
     }
   }
+}
 
+Marginalizer::Prior Marginalizer::marginalize(const std::set<const double*>& leaving,
+                                              double eps) const {
+  const Layout l = layout(leaving);
+  Eigen::MatrixXd H;
+  Eigen::VectorXd g;
+  accumulate(l, H, g);
   Prior prior;
-  if (n == 0) return prior;
-  // Jacobi scaling: the states' units differ by many orders of magnitude (a bias random walk
-  // between keyframes 33 ms apart carries ~1e11 of information, a position ~1e4), so the
-  // eigenvalue floors below are taken on D^-1/2 H D^-1/2, whose diagonal is one. A floor
-  // relative to the largest eigenvalue of H itself dropped every direction weaker than a
-  // hundred-millionth of the stiffest, e.g. the gyro bias as the window's rotations fix it.
-  const Eigen::VectorXd diagonal = H.diagonal();
-  const Eigen::VectorXd scale =
-      (diagonal.array() > 0).select(diagonal.array().rsqrt(), 1.0).matrix();
-  H = scale.asDiagonal() * H * scale.asDiagonal();
-  g = scale.asDiagonal() * g;
-  // Schur complement of the leaving block, with a pseudo-inverse (its information can be
-  // rank-deficient, e.g. an unobserved yaw).
-  const auto pseudoInverse = [eps](const Eigen::MatrixXd& A) {
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
-    const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
-    const Eigen::VectorXd inv =
-        (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
-    return Eigen::MatrixXd(es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose());
-  };
-  const Eigen::MatrixXd Hmm_inv = m > 0 ? pseudoInverse(H.topLeftCorner(m, m)) : Eigen::MatrixXd();
-  Eigen::MatrixXd A = H.bottomRightCorner(n, n);
-  Eigen::VectorXd b = g.tail(n);
-  if (m > 0) {
-    A -= H.bottomLeftCorner(n, m) * Hmm_inv * H.topRightCorner(m, n);
-    b -= H.bottomLeftCorner(n, m) * Hmm_inv * g.head(m);
-  }
-  // A = V S V^T (scaled) -> J = S^1/2 V^T D^1/2, r0 = S^-1/2 V^T b, so that
-  // |J dx + r0|^2 = dx^T A dx + 2 b^T dx + c in the states' own units.
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
-  const double floor = eps * std::max(1.0, es.eigenvalues().cwiseAbs().maxCoeff());
-  const Eigen::VectorXd S = (es.eigenvalues().array() > floor).select(es.eigenvalues(), 0.0);
-  const Eigen::VectorXd Sinv =
-      (es.eigenvalues().array() > floor).select(es.eigenvalues().cwiseInverse(), 0.0);
-  const Eigen::MatrixXd J = S.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() *
-                            scale.tail(n).cwiseInverse().asDiagonal();
-  const Eigen::VectorXd r0 = Sinv.cwiseSqrt().asDiagonal() * es.eigenvectors().transpose() * b;
-
+  if (l.n == 0) return prior;
+  const SchurComplement schur = eliminateLeaving(std::move(H), std::move(g), l.m, l.n, eps);
+  Eigen::MatrixXd J;
+  Eigen::VectorXd r0;
+  squareRootOf(schur, l.n, eps, J, r0);
   std::vector<PriorBlock> blocks;
-  for (double* block : order[1]) {
-    const Column& c = columns[block];
+  for (double* block : l.order[1]) {
+    const Layout::Column& c = l.columns.at(block);
     blocks.push_back({c.ambient, c.pose, std::vector<double>(block, block + c.ambient)});
     prior.blocks.push_back(block);
   }

@@ -35,7 +35,54 @@ std::optional<Eigen::Isometry3d> kabsch(const std::vector<Eigen::Vector3d>& from
   return nearestRigid(T);
 }
 
+/// A new object's first pose: the caller's guess, else the centroid of its measured points
+/// (`withDepth` of them) with the world's axes.
+Eigen::Isometry3d firstPose(const std::vector<RigidObjectFeature>& features,
+                            const std::vector<Eigen::Vector3d>& measured, int withDepth,
+                            const std::optional<Eigen::Isometry3d>& guess) {
+  if (guess && guess->matrix().allFinite()) return nearestRigid(*guess);
+  Eigen::Isometry3d L = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < features.size(); ++i)
+    if (features[i].depth > 0) centroid += measured[i];
+  L.translation() = centroid / withDepth;
+  return L;
+}
+
 }  // namespace
+
+Eigen::Isometry3d RigidObjectTable::fitPose(RigidObject& object,
+                                            const std::vector<RigidObjectFeature>& features,
+                                            const std::vector<Eigen::Vector3d>& measured) {
+  // Kabsch on the features already in the object frame that have a depth now; then once more
+  // without the points that moved away from where the object model puts them.
+  std::vector<std::int64_t> ids;
+  std::vector<Eigen::Vector3d> from, to;
+  for (size_t i = 0; i < features.size(); ++i) {
+    const auto p = object.points.find(features[i].id);
+    if (p == object.points.end() || !(features[i].depth > 0)) continue;
+    ids.push_back(features[i].id);
+    from.emplace_back(p->second.m_obj);
+    to.push_back(measured[i]);
+  }
+  Eigen::Isometry3d L = predictPose(object);
+  if (const auto fit = kabsch(from, to)) {
+    L = *fit;
+    std::vector<Eigen::Vector3d> keptFrom, keptTo;
+    for (size_t i = 0; i < from.size(); ++i) {
+      if ((L * from[i] - to[i]).norm() <= max_point_offset_) {
+        keptFrom.push_back(from[i]);
+        keptTo.push_back(to[i]);
+      } else {
+        // A point that broke away (an arm on a walking person's torso set, a feature that
+        // slid off): it starts again from this measurement.
+        object.points.erase(ids[i]);
+      }
+    }
+    if (const auto refit = kabsch(keptFrom, keptTo)) L = *refit;
+  }
+  return L;
+}
 
 bool RigidObjectTable::observe(int object_id, std::int64_t keyframe,
                                const std::vector<RigidObjectFeature>& features,
@@ -54,42 +101,9 @@ bool RigidObjectTable::observe(int object_id, std::int64_t keyframe,
   Eigen::Isometry3d L = Eigen::Isometry3d::Identity();
   if (found == objects_.end() || found->second.poses.empty()) {
     if (withDepth < kMinFeatures) return false;
-    if (first_pose_guess && first_pose_guess->matrix().allFinite()) {
-      L = nearestRigid(*first_pose_guess);
-    } else {
-      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-      for (size_t i = 0; i < features.size(); ++i)
-        if (features[i].depth > 0) centroid += measured[i];
-      L.translation() = centroid / withDepth;
-    }
+    L = firstPose(features, measured, withDepth, first_pose_guess);
   } else {
-    // Kabsch on the features already in the object frame that have a depth now; then once more
-    // without the points that moved away from where the object model puts them.
-    std::vector<std::int64_t> ids;
-    std::vector<Eigen::Vector3d> from, to;
-    for (size_t i = 0; i < features.size(); ++i) {
-      const auto p = found->second.points.find(features[i].id);
-      if (p == found->second.points.end() || !(features[i].depth > 0)) continue;
-      ids.push_back(features[i].id);
-      from.emplace_back(p->second.m_obj);
-      to.push_back(measured[i]);
-    }
-    L = predictPose(found->second);
-    if (const auto fit = kabsch(from, to)) {
-      L = *fit;
-      std::vector<Eigen::Vector3d> keptFrom, keptTo;
-      for (size_t i = 0; i < from.size(); ++i) {
-        if ((L * from[i] - to[i]).norm() <= max_point_offset_) {
-          keptFrom.push_back(from[i]);
-          keptTo.push_back(to[i]);
-        } else {
-          // A point that broke away (an arm on a walking person's torso set, a feature that
-          // slid off): it starts again from this measurement.
-          found->second.points.erase(ids[i]);
-        }
-      }
-      if (const auto refit = kabsch(keptFrom, keptTo)) L = *refit;
-    }
+    L = fitPose(found->second, features, measured);
   }
 
   RigidObject& object = objects_[object_id];

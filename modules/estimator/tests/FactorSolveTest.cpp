@@ -86,26 +86,36 @@ TEST(FactorSolve, StaticFeaturesWithDepthRecoverTheSecondKeyframeAndTheInverseDe
   for (size_t k = 0; k < lambdas.size(); ++k) EXPECT_NEAR(lambdas[k][0], trueLambdas[k], 1e-7);
 }
 
-TEST(FactorSolve, RigidObjectPosesComeBackFromFeaturesAndSmoothMotion) {
-  // A robot creeping forward while a car 6-8 m ahead drives across with a constant motion
-  // (0.25 m and 3 deg of yaw per keyframe). Body poses and the extrinsic are known; the car's
-  // first pose is held (the object-frame gauge, RigidObjectReprojectionFactor.h).
-  std::mt19937 rng(72);
-  const PinholeCamera cam = testCamera();
-  const Eigen::Isometry3d T_bc = randomExtrinsic(rng);  // camera looks along body x
-  constexpr int kFrames = 4;
-  std::vector<Eigen::Isometry3d> bodies, objects;
+namespace {
+
+/// A robot creeping forward (body poses) while a car 6-8 m ahead drives across with a constant
+/// motion, 0.25 m and 3 deg of yaw per keyframe (object poses).
+void crossingCar(int frames, std::vector<Eigen::Isometry3d>& bodies,
+                 std::vector<Eigen::Isometry3d>& objects) {
   Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
   motion.translation() = Eigen::Vector3d(0.0, -0.25, 0.0);
   motion.linear() = Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   Eigen::Isometry3d L0 = Eigen::Isometry3d::Identity();
   L0.translation() = Eigen::Vector3d(7.0, 0.5, 0.0);
-  for (int n = 0; n < kFrames; ++n) {
+  for (int n = 0; n < frames; ++n) {
     Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
     body.translation().x() = 0.1 * n;
     bodies.push_back(body);
     objects.push_back(n == 0 ? L0 : objects.back() * motion);
   }
+}
+
+}  // namespace
+
+TEST(FactorSolve, RigidObjectPosesComeBackFromFeaturesAndSmoothMotion) {
+  // Body poses and the extrinsic are known; the car's first pose is held (the object-frame
+  // gauge, RigidObjectReprojectionFactor.h).
+  std::mt19937 rng(72);
+  const PinholeCamera cam = testCamera();
+  const Eigen::Isometry3d T_bc = randomExtrinsic(rng);  // camera looks along body x
+  constexpr int kFrames = 4;
+  std::vector<Eigen::Isometry3d> bodies, objects;
+  crossingCar(kFrames, bodies, objects);
 
   ceres::Problem problem;
   std::vector<std::vector<double>> bodyBlocks, objectBlocks;

@@ -102,67 +102,84 @@ TEST(MarginalizationFactor, JacobiansMatchNumericDifferentiation) {
   EXPECT_LT((r - r0).norm(), 1e-12) << "r0 at the linearisation point";
 }
 
-TEST(Marginalizer, MarginalisingTheOldestStateKeepsTheSolution) {
-  const double times[3] = {1.0, 1.3, 1.6};
-  State truth[3] = {stateAt(times[0]), stateAt(times[1]), stateAt(times[2])};
-  const auto imu01 = imuBetween(times[0], times[1]);
-  const auto imu12 = imuBetween(times[1], times[2]);
-  // Priors that disagree with the IMU (5 cm on the last pose), so the optimum has residuals.
-  State shifted = truth[2];
-  shifted.pose[0] += 0.05;
-  const auto prior0 = posePrior(truth[0].pose, 0.01, 0.01);
-  const auto prior0sb = speedBiasPrior(truth[0].speedBias, 0.1);
-  const auto prior2 = posePrior(shifted.pose, 0.02, 0.05);
-  ceres::HuberLoss huber(1.0);
+namespace {
 
-  State full[3] = {truth[0], truth[1], truth[2]};
-  for (auto& s : full) s.pose[1] += 0.03;  // start away from the optimum
-  {
+/// Three states linked by IMU factors, with priors on the first and a prior on the last that
+/// disagrees with the IMU (5 cm), so the optimum has residuals.
+struct ConflictingPriors {
+  double times[3] = {1.0, 1.3, 1.6};
+  State truth[3] = {stateAt(times[0]), stateAt(times[1]), stateAt(times[2])};
+  std::shared_ptr<ImuFactor> imu01 = imuBetween(times[0], times[1]);
+  std::shared_ptr<ImuFactor> imu12 = imuBetween(times[1], times[2]);
+  std::shared_ptr<MarginalizationFactor> prior0 = posePrior(truth[0].pose, 0.01, 0.01);
+  std::shared_ptr<MarginalizationFactor> prior0sb = speedBiasPrior(truth[0].speedBias, 0.1);
+  std::shared_ptr<MarginalizationFactor> prior2;
+  ceres::HuberLoss huber{1.0};
+
+  ConflictingPriors() {
+    State shifted = truth[2];
+    shifted.pose[0] += 0.05;
+    prior2 = posePrior(shifted.pose, 0.02, 0.05);
+  }
+
+  /// All three states solved with every factor.
+  void solveAll(State (&x)[3]) {
     ceres::Problem problem(notOwning());
-    for (auto& s : full) {
+    for (auto& s : x) {
       problem.AddParameterBlock(s.pose, 7, new PoseManifold);
       problem.AddParameterBlock(s.speedBias, 9);
     }
-    problem.AddResidualBlock(prior0.get(), nullptr, full[0].pose);
-    problem.AddResidualBlock(prior0sb.get(), nullptr, full[0].speedBias);
-    problem.AddResidualBlock(imu01.get(), nullptr, full[0].pose, full[0].speedBias, full[1].pose,
-                             full[1].speedBias);
-    problem.AddResidualBlock(imu12.get(), nullptr, full[1].pose, full[1].speedBias, full[2].pose,
-                             full[2].speedBias);
-    problem.AddResidualBlock(prior2.get(), &huber, full[2].pose);
+    problem.AddResidualBlock(prior0.get(), nullptr, x[0].pose);
+    problem.AddResidualBlock(prior0sb.get(), nullptr, x[0].speedBias);
+    problem.AddResidualBlock(imu01.get(), nullptr, x[0].pose, x[0].speedBias, x[1].pose,
+                             x[1].speedBias);
+    problem.AddResidualBlock(imu12.get(), nullptr, x[1].pose, x[1].speedBias, x[2].pose,
+                             x[2].speedBias);
+    problem.AddResidualBlock(prior2.get(), &huber, x[2].pose);
     solve(problem);
   }
-  const double pull = (Eigen::Map<Eigen::Vector3d>(full[2].pose) -
-                       Eigen::Map<Eigen::Vector3d>(truth[2].pose)).norm();
-  EXPECT_GT(pull, 0.005) << "the conflicting prior moved the optimum";
 
-  // Marginalise state 0 at the optimum, then solve the rest again from a perturbed start.
-  State kept[3] = {full[0], full[1], full[2]};
-  Marginalizer marginalizer;
-  for (auto& s : kept) marginalizer.setPoseBlock(s.pose);
-  marginalizer.addFactor(prior0, nullptr, {kept[0].pose});
-  marginalizer.addFactor(prior0sb, nullptr, {kept[0].speedBias});
-  marginalizer.addFactor(imu01, nullptr,
-                         {kept[0].pose, kept[0].speedBias, kept[1].pose, kept[1].speedBias});
-  const auto prior = marginalizer.marginalize({kept[0].pose, kept[0].speedBias});
-  ASSERT_TRUE(prior.factor);
-  ASSERT_EQ(prior.blocks.size(), 2u);
-  EXPECT_EQ(prior.blocks[0], kept[1].pose);
-  for (int k = 1; k < 3; ++k) kept[k].pose[2] -= 0.02;
-  {
+  /// State 0 marginalised at x's values; states 1 and 2 then solved with the prior it left.
+  void solveWithoutTheFirst(State (&x)[3]) {
+    Marginalizer marginalizer;
+    for (auto& s : x) marginalizer.setPoseBlock(s.pose);
+    marginalizer.addFactor(prior0, nullptr, {x[0].pose});
+    marginalizer.addFactor(prior0sb, nullptr, {x[0].speedBias});
+    marginalizer.addFactor(imu01, nullptr, {x[0].pose, x[0].speedBias, x[1].pose, x[1].speedBias});
+    const auto prior = marginalizer.marginalize({x[0].pose, x[0].speedBias});
+    ASSERT_TRUE(prior.factor);
+    ASSERT_EQ(prior.blocks.size(), 2u);
+    EXPECT_EQ(prior.blocks[0], x[1].pose);
+    for (int k = 1; k < 3; ++k) x[k].pose[2] -= 0.02;  // a perturbed start
     ceres::Problem problem(notOwning());
     for (int k = 1; k < 3; ++k) {
-      problem.AddParameterBlock(kept[k].pose, 7, new PoseManifold);
-      problem.AddParameterBlock(kept[k].speedBias, 9);
+      problem.AddParameterBlock(x[k].pose, 7, new PoseManifold);
+      problem.AddParameterBlock(x[k].speedBias, 9);
     }
     problem.AddResidualBlock(prior.factor.get(), nullptr, prior.blocks);
-    problem.AddResidualBlock(imu12.get(), nullptr, kept[1].pose, kept[1].speedBias, kept[2].pose,
-                             kept[2].speedBias);
-    problem.AddResidualBlock(prior2.get(), &huber, kept[2].pose);
+    problem.AddResidualBlock(imu12.get(), nullptr, x[1].pose, x[1].speedBias, x[2].pose,
+                             x[2].speedBias);
+    problem.AddResidualBlock(prior2.get(), &huber, x[2].pose);
     solve(problem);
   }
+};
+
+}  // namespace
+
+TEST(Marginalizer, MarginalisingTheOldestStateKeepsTheSolution) {
+  ConflictingPriors graph;
+  State full[3] = {graph.truth[0], graph.truth[1], graph.truth[2]};
+  for (auto& s : full) s.pose[1] += 0.03;  // start away from the optimum
+  graph.solveAll(full);
+  const double pull = (Eigen::Map<Eigen::Vector3d>(full[2].pose) -
+                       Eigen::Map<Eigen::Vector3d>(graph.truth[2].pose)).norm();
+  EXPECT_GT(pull, 0.005) << "the conflicting prior moved the optimum";
+
+  State kept[3] = {full[0], full[1], full[2]};
+  graph.solveWithoutTheFirst(kept);
   for (int k = 1; k < 3; ++k) {
-    for (int i = 0; i < 7; ++i) EXPECT_NEAR(kept[k].pose[i], full[k].pose[i], 1e-6) << k << "," << i;
+    for (int i = 0; i < 7; ++i)
+      EXPECT_NEAR(kept[k].pose[i], full[k].pose[i], 1e-6) << k << "," << i;
     for (int i = 0; i < 9; ++i)
       EXPECT_NEAR(kept[k].speedBias[i], full[k].speedBias[i], 1e-5) << k << "," << i;
   }

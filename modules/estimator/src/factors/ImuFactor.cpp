@@ -68,57 +68,68 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals,
   r = sqrt_information_ * r;
   if (!jacobians) return true;
 
+  const Linearisation at{q_i, q_j, gamma, bg_i, Ri_T, dp_world, dv_world, T};
+  if (jacobians[0]) poseJacobianI(at, jacobians[0]);
+  if (jacobians[1]) speedBiasJacobianI(at, jacobians[1]);
+  if (jacobians[2]) poseJacobianJ(at, jacobians[2]);
+  if (jacobians[3]) speedBiasJacobianJ(at, jacobians[3]);
+  return true;
+}
+
+void ImuFactor::poseJacobianI(const Linearisation& at, double* jacobian) const {
+  Eigen::Map<Eigen::Matrix<double, 15, 7, Eigen::RowMajor>> Jp(jacobian);
+  Jp.setZero();
+  Jp.block<3, 3>(kP, 0) = -at.Ri_T;
+  Jp.block<3, 3>(kP, 3) = skew(at.Ri_T * at.dp_world);
+  Jp.block<3, 3>(kR, 3) =
+      -(quatLeft(at.q_j.inverse() * at.q_i) * quatRight(at.gamma)).bottomRightCorner<3, 3>();
+  Jp.block<3, 3>(kV, 3) = skew(at.Ri_T * at.dv_world);
+  Jp.leftCols<6>() = sqrt_information_ * Jp.leftCols<6>();
+}
+
+void ImuFactor::speedBiasJacobianI(const Linearisation& at, double* jacobian) const {
+  const ImuPreintegration& pre = *preintegration_;
   const Matrix15d& J = pre.jacobian();
   const Eigen::Matrix3d dp_dba = J.block<3, 3>(kP, kBa), dp_dbg = J.block<3, 3>(kP, kBg);
   const Eigen::Matrix3d dq_dbg = J.block<3, 3>(kR, kBg);
   const Eigen::Matrix3d dv_dba = J.block<3, 3>(kV, kBa), dv_dbg = J.block<3, 3>(kV, kBg);
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  Eigen::Map<Eigen::Matrix<double, 15, 9, Eigen::RowMajor>> Js(jacobian);
+  Js.setZero();
+  Js.block<3, 3>(kP, 0) = -at.Ri_T * at.T;
+  Js.block<3, 3>(kP, 3) = -dp_dba;
+  Js.block<3, 3>(kP, 6) = -dp_dbg;
+  // gamma(bg) = gamma0 Exp(dq_dbg (bg - bg0)): the right Jacobian of that Exp makes the
+  // derivative exact away from the linearisation point (VINS drops it: first order only).
+  const Eigen::Vector3d phi = dq_dbg * (at.bg_i - pre.linearizedBg());
+  Js.block<3, 3>(kR, 6) =
+      -quatLeft(at.q_j.inverse() * at.q_i * at.gamma).bottomRightCorner<3, 3>() *
+      rightJacobianSO3(phi) * dq_dbg;
+  Js.block<3, 3>(kV, 0) = -at.Ri_T;
+  Js.block<3, 3>(kV, 3) = -dv_dba;
+  Js.block<3, 3>(kV, 6) = -dv_dbg;
+  Js.block<3, 3>(kBa, 3) = -I;
+  Js.block<3, 3>(kBg, 6) = -I;
+  Js = sqrt_information_ * Js;
+}
 
-  if (jacobians[0]) {
-    Eigen::Map<Eigen::Matrix<double, 15, 7, Eigen::RowMajor>> Jp(jacobians[0]);
-    Jp.setZero();
-    Jp.block<3, 3>(kP, 0) = -Ri_T;
-    Jp.block<3, 3>(kP, 3) = skew(Ri_T * dp_world);
-    Jp.block<3, 3>(kR, 3) =
-        -(quatLeft(q_j.inverse() * q_i) * quatRight(gamma)).bottomRightCorner<3, 3>();
-    Jp.block<3, 3>(kV, 3) = skew(Ri_T * dv_world);
-    Jp.leftCols<6>() = sqrt_information_ * Jp.leftCols<6>();
-  }
-  if (jacobians[1]) {
-    Eigen::Map<Eigen::Matrix<double, 15, 9, Eigen::RowMajor>> Js(jacobians[1]);
-    Js.setZero();
-    Js.block<3, 3>(kP, 0) = -Ri_T * T;
-    Js.block<3, 3>(kP, 3) = -dp_dba;
-    Js.block<3, 3>(kP, 6) = -dp_dbg;
-    // gamma(bg) = gamma0 Exp(dq_dbg (bg - bg0)): the right Jacobian of that Exp makes the
-    // derivative exact away from the linearisation point (VINS drops it: first order only).
-    const Eigen::Vector3d phi = dq_dbg * (bg_i - pre.linearizedBg());
-    Js.block<3, 3>(kR, 6) = -quatLeft(q_j.inverse() * q_i * gamma).bottomRightCorner<3, 3>() *
-                            rightJacobianSO3(phi) * dq_dbg;
-    Js.block<3, 3>(kV, 0) = -Ri_T;
-    Js.block<3, 3>(kV, 3) = -dv_dba;
-    Js.block<3, 3>(kV, 6) = -dv_dbg;
-    Js.block<3, 3>(kBa, 3) = -I;
-    Js.block<3, 3>(kBg, 6) = -I;
-    Js = sqrt_information_ * Js;
-  }
-  if (jacobians[2]) {
-    Eigen::Map<Eigen::Matrix<double, 15, 7, Eigen::RowMajor>> Jp(jacobians[2]);
-    Jp.setZero();
-    Jp.block<3, 3>(kP, 0) = Ri_T;
-    Jp.block<3, 3>(kR, 3) =
-        quatLeft(gamma.inverse() * q_i.inverse() * q_j).bottomRightCorner<3, 3>();
-    Jp.leftCols<6>() = sqrt_information_ * Jp.leftCols<6>();
-  }
-  if (jacobians[3]) {
-    Eigen::Map<Eigen::Matrix<double, 15, 9, Eigen::RowMajor>> Js(jacobians[3]);
-    Js.setZero();
-    Js.block<3, 3>(kV, 0) = Ri_T;
-    Js.block<3, 3>(kBa, 3) = I;
-    Js.block<3, 3>(kBg, 6) = I;
-    Js = sqrt_information_ * Js;
-  }
-  return true;
+void ImuFactor::poseJacobianJ(const Linearisation& at, double* jacobian) const {
+  Eigen::Map<Eigen::Matrix<double, 15, 7, Eigen::RowMajor>> Jp(jacobian);
+  Jp.setZero();
+  Jp.block<3, 3>(kP, 0) = at.Ri_T;
+  Jp.block<3, 3>(kR, 3) =
+      quatLeft(at.gamma.inverse() * at.q_i.inverse() * at.q_j).bottomRightCorner<3, 3>();
+  Jp.leftCols<6>() = sqrt_information_ * Jp.leftCols<6>();
+}
+
+void ImuFactor::speedBiasJacobianJ(const Linearisation& at, double* jacobian) const {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  Eigen::Map<Eigen::Matrix<double, 15, 9, Eigen::RowMajor>> Js(jacobian);
+  Js.setZero();
+  Js.block<3, 3>(kV, 0) = at.Ri_T;
+  Js.block<3, 3>(kBa, 3) = I;
+  Js.block<3, 3>(kBg, 6) = I;
+  Js = sqrt_information_ * Js;
 }
 
 }  // namespace dynslam::estimator

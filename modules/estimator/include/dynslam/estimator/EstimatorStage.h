@@ -6,26 +6,19 @@
 // PnP against the window's landmarks. It also carries the tracked objects' rigid point sets
 // into world trajectories (ObjectTrajectories: Frame::object_poses).
 //
-// Which features constrain the camera (dynamic_handling, the paper's baselines, Table 9;
-// FeatureRouting.h):
-//   none   - every feature, whatever its class (no dynamic handling, like VINS-Mono);
-//   remove - only Static features off the detected objects (people and cars masked out whether
-//            they move or not, like Dynamic-VINS);
-//   full   - the paper (the default): Static features as landmarks, a standing person's and a
-//            parked car's among them, with nonrigid_factors the NonRigid
-//            features as constant-velocity world points (r_D), with rigid_factors the Rigid
-//            features as points of their object, whose poses the window estimates (r_O, r_om;
-//            those estimates then give Frame::object_poses at keyframes).
+// Which features constrain the camera, and how, is dynamic_handling (the paper and its Table 9
+// baselines): FeatureRouting.h.
 //
 // Sensors: RGB-D, and the IMU when the frames carry gyro + accelerometer samples and use_imu is
 // on. The window starts from RGB-D alone (a constant-motion prior ties consecutive keyframes,
 // world = the first frame's IMU frame); once it is full, the IMU initialization (ImuInitializer)
 // is tried at every keyframe until it succeeds (and only while every keyframe of the window saw
 // enough), and the window turns visual-inertial (gravity as found in the unchanged world, IMU
-// factors, frames between keyframes predicted by the IMU). The
-// estimator's body frame is the IMU's; its camera extrinsic is T_imu_camera =
-// T_body_imu^-1 T_body_camera from the rawlog's sensor poses. Without an IMU (e.g. 7-Scenes,
-// TUM's accelerometer-only IMU) it stays RGB-D only.
+// factors, frames between keyframes predicted by the IMU). The estimator's body frame is the
+// IMU's; its camera extrinsic is T_imu_camera = T_body_imu^-1 T_body_camera from the rawlog's
+// sensor poses. Without an IMU (e.g. 7-Scenes, TUM's accelerometer-only IMU) it stays RGB-D
+// only.
+#include <dynslam/core/Options.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/estimator/FeatureRouting.h>
 #include <dynslam/estimator/ImuInitializer.h>
@@ -34,9 +27,6 @@
 #include <dynslam/estimator/ObjectTrajectories.h>
 #include <dynslam/estimator/SlidingWindow.h>
 
-#include <mrpt/config/CLoadableOptions.h>
-
-#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,43 +34,43 @@
 
 namespace dynslam::estimator {
 
-struct EstimatorOptions : mrpt::config::CLoadableOptions {
+/// [Estimator]: every key, its range and meaning in describe() (EstimatorOptions.cpp).
+struct EstimatorOptions : core::Options {
   SlidingWindowParams window;
   KeyframeSelectorParams keyframes;
   DynamicHandling dynamic_handling = DynamicHandling::Full;
-  bool nonrigid_factors = true;  ///< with full: r_D for NonRigid features (Table 9 ablation)
-  bool rigid_factors = true;     ///< with full: r_O / r_om for Rigid features (Table 9 ablation)
-  /// With full and an IMU: no r_D / r_O / r_om until the IMU initialization succeeds; the
-  /// moving features are dropped meanwhile (not in method.md, which does not speak of
-  /// start-up). In the visual-only start-up window the objects' motion models pulled the
-  /// camera: indoor_people_low seed 2, full 0.0197 m against them dropped 0.0119 (a 9 cm excursion
-  /// at 0.8-1.2 s); with this 0.0120, other seeds and indoor_people_high's 18 unchanged.
+  bool nonrigid_factors = true;
+  bool rigid_factors = true;
+  /// No r_D / r_O / r_om until the IMU initialization succeeds (method.md does not speak of
+  /// start-up): in the visual-only start-up window the objects' motion models pulled the camera
+  /// (docs/notes/estimator.md, 2026-11-28 (object_factors_wait_for_imu)).
   bool object_factors_wait_for_imu = true;
-  /// A feature classified as moving takes its static landmark out of the window: its earlier
-  /// observations came from frames in which it was not known to move (a walker entering the
-  /// view undetected, a detector miss).
+  /// Why: a moving feature's landmark was made from frames in which it was not known to move (a
+  /// walker entering the view undetected, a detector miss).
   bool drop_moving_landmarks = true;
-  bool use_imu = true;  ///< use the IMU when the frames carry gyro + accelerometer samples
+  bool use_imu = true;
   ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
   double pnp_threshold_px = 3.0;
-  /// A PnP pose farther than this from the constant-velocity prediction is taken for a wrong
-  /// RANSAC consensus and not used (m, deg).
+  /// Farther from the constant-velocity prediction: a wrong RANSAC consensus.
   double pnp_max_correction_m = 0.3, pnp_max_correction_deg = 20.0;
-  /// With the window visual-inertial, a PnP pose farther than this from the IMU's prediction
-  /// is not used and the prediction is the frame's pose (m, deg; 0: off, the looser bound above
-  /// only; not the method). See PnpPoseGate (FramePoseTracker.h).
-  double pnp_max_imu_correction_m = 0.0, pnp_max_imu_correction_deg = 0.0;
-  /// Failure detection: estimates beyond these restart the window (m/s, rad/s, m/s^2).
+  /// PnpPoseGate (FramePoseTracker.h). Not the method (0: off); measured gain:
+  /// docs/notes/estimator.md, 2026-11-28 (pnp_max_imu_correction).
+  double pnp_max_imu_correction_m = 0.05, pnp_max_imu_correction_deg = 3.0;
+  /// Failure detection: estimates beyond these restart the window.
   double max_speed = 10.0, max_gyro_bias = 0.2, max_acc_bias = 2.0;
-  int min_keyframe_features = 15;  ///< fewer static features: no keyframe, the pose is predicted
-  /// GNSS position factors (GnssAnchor; lever arm in window.gnss_lever_arm), when the frames
-  /// carry fixes.
-  bool use_gnss = false;
+  int min_keyframe_features = 15;
+  bool use_gnss = false;  ///< GnssAnchor; the lever arm is window.gnss_lever_arm
   GnssAnchorParams gnss;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
+
+ private:
+  void describeWindow(core::OptionVisitor& v);
+  void describeFrames(core::OptionVisitor& v);  // keyframes, PnP
+  void describeImu(core::OptionVisitor& v);
+  void describeDynamics(core::OptionVisitor& v);
+  void describeGnss(core::OptionVisitor& v);
 };
 
 class EstimatorStage : public core::Stage {
@@ -103,6 +93,45 @@ class EstimatorStage : public core::Stage {
   const EstimatorOptions& options() const { return options_; }
 
  private:
+  /// What a keyframe is made from besides the routed features.
+  struct KeyframeContext {
+    KeyframeSelector::Reason reason;
+    int shared = 0;               ///< features shared with the last keyframe
+    Eigen::Isometry3d T_ic;       ///< camera in the body (IMU) frame
+    Eigen::Vector3d velocity;     ///< the prediction's (IMU) or zero
+  };
+  /// What a keyframe left for the frame's output.
+  struct KeyframeOutcome {
+    bool restarted = false;
+    std::vector<std::pair<int, Eigen::Isometry3d>> objects;  ///< the window's object poses
+  };
+
+  // process(), phase by phase.
+  /// Creates the IMU and GNSS inputs once their data appears, and hands them the frame's.
+  void takeSensorData(const core::Frame& frame);
+  /// routeFeatures() as configured; drops the moving features' landmarks from the window.
+  RoutedFeatures routeFrameFeatures(const core::Frame& frame);
+  /// The frame's body pose: the PnP pose against the window's landmarks when it passes the
+  /// gates, else the prediction. Starts the window on the first frame.
+  Eigen::Isometry3d trackBody(const core::Frame& frame,
+                              const std::map<std::int64_t, Eigen::Vector2d>& pixels,
+                              const Eigen::Isometry3d& T_ic, Eigen::Vector3d& velocity);
+  /// Whether the frame makes a keyframe (NotKeyframe when it sees too little).
+  KeyframeSelector::Reason keyframeReason(double t, const RoutedFeatures& routed, int* shared);
+  /// Adds the keyframe, solves, detects a failure (and restarts) or tries the IMU
+  /// initialization; T_wb becomes the body pose to write. Sets frame.keyframe.
+  KeyframeOutcome makeKeyframe(core::Frame& frame, RoutedFeatures& routed,
+                               const KeyframeContext& context, Eigen::Isometry3d& T_wb);
+  KeyframeInput keyframeInput(const core::Frame& frame, RoutedFeatures& routed,
+                              const Eigen::Isometry3d& T_wb, const KeyframeContext& context);
+  /// Marks a usable solve unusable when its newest keyframe is not plausible.
+  void detectFailure(SolveReport& report, const Eigen::Isometry3d& tracked) const;
+  void restartWindow(const core::Frame& frame, KeyframeInput& in, const Eigen::Isometry3d& T_wb,
+                     const std::map<std::int64_t, Eigen::Vector2d>& pixels);
+  /// Frame::T_world_camera and the objects' poses; the motion model's last poses.
+  void writePose(core::Frame& frame, Eigen::Isometry3d T_wb, const Eigen::Isometry3d& T_ic,
+                 const KeyframeOutcome& keyframe);
+
   void startWindow(const core::Frame& frame);
   /// The body pose this frame is expected at: IMU propagation from the last keyframe when the
   /// window is visual-inertial, else constant velocity from the last two frames.
@@ -119,7 +148,6 @@ class EstimatorStage : public core::Stage {
   std::unique_ptr<KeyframeImu> imu_;
   std::unique_ptr<GnssAnchor> gnss_;
   ObjectTrajectories objects_;
-  std::deque<std::size_t> window_features_;  // static features given to each window keyframe
   KeyframeSelector selector_;
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
   std::vector<double> solve_ms_;

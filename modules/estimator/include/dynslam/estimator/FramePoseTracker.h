@@ -29,8 +29,8 @@ struct PnpPoseGate {
   /// From the motion prediction or from the last pose: farther is a wrong RANSAC consensus.
   double max_m = 0.3, max_deg = 20.0;
   /// From an IMU prediction (0: off, the bounds above only). Not the method: where a walker
-  /// filling the view passes for static, PnP follows it by 0.1-0.2 m a frame, while the IMU's
-  /// prediction over a keyframe interval errs by millimetres.
+  /// filling the view passes for static, PnP follows it, while the IMU's prediction over a
+  /// keyframe interval stays close (docs/notes/estimator.md, 2026-11-28 (pnp_max_imu_correction)).
   double imu_max_m = 0.0, imu_max_deg = 0.0;
 };
 

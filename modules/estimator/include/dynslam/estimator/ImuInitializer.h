@@ -38,10 +38,8 @@
 //    min_acceleration_rms = 0 to accept still starts.
 // The accelerometer bias is not estimated (as VINS): its component across gravity is taken as
 // a tilt of g (|ba| / |g| rad, ~0.8 deg for EuRoC's 0.14 m/s^2); only rotating the body
-// separates them, which the sliding window does later. Tried on EuRoC V1_02 (ba as 3 more
-// unknowns of the refinement): over 2.7 s windows the tilt median fell from 0.76 to 0.60 deg
-// but the worst window rose from 1.1 to 2.4 deg; with a ridge prior 0.42 / 1.15 deg. Not worth
-// the failure cases here.
+// separates them, which the sliding window does later. Estimated here too, it made the worst
+// windows worse (docs/notes/estimator.md, 2026-11-28 (accelerometer bias)).
 //
 // Using the result: with R = R_gravity_world, the gravity-aligned states are R T_world_body,
 // R v_world, and gravity (0, 0, -gravity_magnitude); the gyro bias as estimated, the

@@ -10,13 +10,14 @@
 
 namespace dynslam::estimator {
 
+/// [Estimator] keyframe_parallax_px, keyframe_max_interval, keyframe_min_shared: ranges and
+/// meanings in EstimatorOptions::describe() (EstimatorOptions.cpp), docs/parameters.md.
 struct KeyframeSelectorParams {
-  double min_parallax_px = 10.0;  ///< mean pixel motion of shared features since the keyframe
-  double max_interval_s = 0.5;    ///< a keyframe at least this often (the IMU factor stays short)
-  /// Fewer features shared with the last keyframe: keyframe. 20 as VINS-Fusion's tracker; with
-  /// 40, a crowd that left 35-60 static features made every frame a keyframe, the 10-keyframe
-  /// window shrank to 0.33 s and its velocity and gyro bias followed the few features
-  /// (indoor_people_high, 18 seeds: mean APE 0.0313 -> 0.0221 m at 20).
+  double min_parallax_px = 10.0;
+  double max_interval_s = 0.5;  ///< the IMU factor between keyframes stays short
+  /// 20 as VINS-Fusion's tracker: with more, a crowd that leaves few static features makes every
+  /// frame a keyframe, the window shrinks to a fraction of a second and its velocity and gyro
+  /// bias follow the few features (docs/notes/estimator.md, 2026-11-28 (keyframe_min_shared)).
   int min_shared = 20;
 };
 

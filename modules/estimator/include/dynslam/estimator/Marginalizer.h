@@ -11,6 +11,8 @@
 #include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
 
+#include <Eigen/Core>
+
 #include <memory>
 #include <set>
 #include <vector>
@@ -39,6 +41,12 @@ class Marginalizer {
   Prior marginalize(const std::set<const double*>& leaving, double eps = 1e-8) const;
 
  private:
+  struct Layout;
+  /// Where each block's columns go in the normal equations.
+  Layout layout(const std::set<const double*>& leaving) const;
+  /// The normal equations of the factors, linearised at the blocks' current values.
+  void accumulate(const Layout& layout, Eigen::MatrixXd& H, Eigen::VectorXd& g) const;
+
   struct Factor {
     std::shared_ptr<const ceres::CostFunction> cost;
     const ceres::LossFunction* loss;

@@ -14,8 +14,8 @@
 //
 // What is written (Frame::object_poses, objects/ID.tum) is that orientation placed at the set's
 // virtual centroid in this frame: the composed origin drifts from the set as rotation errors
-// compound, and jumps where the window recentres an object's frame. (indoor_people_high, full:
-// object APE median over 14 tracks 0.248 -> 0.236 m.)
+// compound, and jumps where the window recentres an object's frame (measured:
+// docs/notes/estimator.md, 2026-11-28 (virtual centroid)).
 #include <dynslam/core/Frame.h>
 
 #include <map>

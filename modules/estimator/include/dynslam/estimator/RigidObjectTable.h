@@ -71,6 +71,11 @@ class RigidObjectTable {
   const std::map<int, RigidObject>& all() const { return objects_; }
 
  private:
+  /// A known object's pose in this keyframe from its points' measured world positions
+  /// (`measured`, by feature), the points that broke away dropped.
+  Eigen::Isometry3d fitPose(RigidObject& object, const std::vector<RigidObjectFeature>& features,
+                            const std::vector<Eigen::Vector3d>& measured);
+
   double max_point_offset_;  ///< m
   std::map<int, RigidObject> objects_;
 };

@@ -20,8 +20,9 @@
 //   in the problem is held constant, and before each solve the frame of every object seen in the
 //   new keyframe is moved (axes kept) to the centroid of the points seen there. Why: the rigid set
 //   on a walking person changes members, and an origin kept where the first members were drifted
-//   up to 0.5 m from the torso over a window (indoor_people_high); recentred, the object position
-//   written follows the points now seen, like the front-end's virtual centroid.
+//   off the torso over a window (docs/notes/estimator.md, 2026-11-28 (recentred)); recentred,
+//   the object position written follows the points now seen, like the front-end's virtual
+//   centroid.
 // - Marginalisation: an object's factors touching the leaving keyframe are DROPPED, not put into
 //   the prior, and its L there with them; the object's next L becomes its gauge. Why: objects
 //   come and go (occlusions, people leaving the view), and a prior linking their states would
@@ -49,40 +50,32 @@
 
 namespace dynslam::estimator {
 
+/// The [Estimator] keys among these: ranges and meanings in EstimatorOptions::describe()
+/// (EstimatorOptions.cpp), docs/parameters.md.
 struct SlidingWindowParams {
-  int window_size = 10;            ///< keyframes in the window
-  /// Ceres iterations per keyframe: each solve starts from the last one's window, so few are
-  /// needed. 6 -> 4 (2026-11-25): solve median 25 -> 18-20 ms, APE the same over 31 runs
-  /// (README "Estimator"); 7-Scenes: 10 gave the same APE as 6, 1.7x the time.
+  int window_size = 10;
+  /// Each solve starts from the last one's window, so few iterations are needed (measured:
+  /// docs/notes/estimator.md, 2026-11-28 (max_iterations)).
   int max_iterations = 4;
-  double max_solver_time_s = 0.05; ///< Ceres wall-time limit per keyframe
-  /// Ceres threads. 1 keeps runs repeatable: with 2 the Schur sums' order varies, and the tiny
-  /// differences change later keyframe and restart decisions (two runs of the same faulted
-  /// rawlog jumped 0.05 m and 0.28 m).
-  int solver_threads = 1;
-  /// Steps of Ceres's projected line search after each trust-region step, which it runs on any
-  /// problem with bounds (ours: inverse depths >= 1e-3). Each of its steps evaluates the
-  /// gradient, so every iteration evaluated the Jacobians twice: a third of the solve time
-  /// (indoor_people_high seed 1: median solve 28.7 -> 19.7 ms at 0). Ceres's own comment calls
-  /// it "not terribly effective"; with 0 a step is only projected onto the bounds (APE over 30
-  /// simulator runs the same, README "Estimator"). Ceres's default: 20.
+  double max_solver_time_s = 0.05;
+  /// Ceres runs its projected line search on any problem with bounds (ours: inverse depths
+  /// >= 1e-3), and each of its steps evaluates the gradient again; with 0 a step is only
+  /// projected onto the bounds, as accurate and faster (docs/notes/estimator.md, 2026-11-28
+  /// (line_search_steps)).
   int line_search_steps = 0;
-  double pixel_sigma = 1.0;        ///< px, reprojection noise
-  double huber_sigmas = 2.0;       ///< Huber threshold on whitened reprojection residuals
+  double pixel_sigma = 1.0;
+  double huber_sigmas = 2.0;
   DepthNoiseModel depth_noise;
-  bool transferred_depth = true;   ///< depth measured in later keyframes constrains them too
-  bool use_imu = true;             ///< false: RGB-D only, motion prior between keyframes
+  bool transferred_depth = true;
+  bool use_imu = true;  ///< false: RGB-D only, motion prior between keyframes
   ImuNoise imu_noise;
-  Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
-  /// RGB-D only: sigmas of the constant-motion prior per keyframe interval (m, rad).
+  Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< world gravity of the IMU factors
   double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
-  /// rad/s; > 0: while the window has no IMU factors but the keyframes carry preintegrations
-  /// (IMU not yet initialized, or a restart), consecutive keyframes keep the gyro's rotation
-  /// within this drift rate times their interval (GyroRotationFactor.h; not the method). 0: off.
-  double gyro_rotation_sigma = 0;
-  /// r_om: sigmas of a rigid object's change of motion per keyframe interval (m, rad).
+  /// > 0: while the window has no IMU factors but the keyframes carry preintegrations (IMU not
+  /// yet initialized, or a restart), GyroRotationFactor between consecutive keyframes. Not the
+  /// method (0); why and measured gain: docs/notes/estimator.md, 2026-11-28 (gyro_rotation_sigma).
+  double gyro_rotation_sigma = 0.001;
   double object_motion_sigma_translation = 0.05, object_motion_sigma_rotation = 0.05;
-  /// GNSS antenna in the body frame (m) and the Huber threshold on its whitened residual.
   Eigen::Vector3d gnss_lever_arm = Eigen::Vector3d::Zero();
   double gnss_huber_sigmas = 3.0;
 };
@@ -140,6 +133,9 @@ class SlidingWindow {
   bool empty() const { return keyframes_.empty(); }
   std::size_t size() const { return keyframes_.size(); }
   double latestTime() const;
+  /// The static features each keyframe of the window was given (KeyframeInput::features),
+  /// oldest first: they enter and leave with their keyframes.
+  std::vector<std::size_t> featureCounts() const;
   Eigen::Isometry3d latestPose() const;
   Eigen::Vector3d latestVelocity() const;
   Eigen::Vector3d latestAccBias() const;
@@ -189,6 +185,7 @@ class SlidingWindow {
   struct Keyframe {
     std::int64_t id = 0;
     double t = 0;
+    std::size_t features = 0;  // static features given to it
     double pose[7];
     double speed_bias[9];
     std::shared_ptr<ImuPreintegration> preintegration;  // from the previous keyframe
@@ -207,7 +204,8 @@ class SlidingWindow {
   };
   class ProblemBuilder;
 
-  SolveReport solve();
+  SolveReport solve();  // SlidingWindowProblem.cpp
+  void repropagatePreintegrations();
   void marginalizeOldest();
   Eigen::Vector3d landmarkWorld(const Landmark& l) const;
   /// Depth of a world point in keyframe `k`'s camera, at the current estimate.

@@ -2,8 +2,8 @@
 // The gyroscope's rotation between two consecutive keyframes while the window has no IMU
 // factors (not the method): before the IMU initialization succeeds, and after a restart until
 // it succeeds again. The window is then RGB-D only, and nothing kept its rotation from following
-// features that move: on market_crowd_high seed 4 a crowd crossing the view while the camera
-// stood still turned the window 47 deg in half a second, which the gyro would have read as 0.
+// features that move: a crowd crossing the view of a still camera turned the window, which the
+// gyro would have read as still (docs/notes/estimator.md, 2026-11-28 (gyro_rotation_sigma)).
 // With the preintegrated rotation gamma (ImuPreintegration, biases at their linearisation point)
 // and body poses T_a, T_b (pose blocks),
 //

@@ -30,6 +30,21 @@ class ImuFactor : public ceres::SizedCostFunction<15, 7, 9, 7, 9> {
   const ImuPreintegration& preintegration() const { return *preintegration_; }
 
  private:
+  /// What the residual and its Jacobians share at one evaluation.
+  struct Linearisation {
+    Eigen::Quaterniond q_i, q_j, gamma;  ///< the poses' rotations; gamma at bg_i
+    Eigen::Vector3d bg_i;
+    Eigen::Matrix3d Ri_T;
+    /// p_j - p_i - v_i T - g T^2 / 2 and v_j - v_i - g T (world)
+    Eigen::Vector3d dp_world, dv_world;
+    double T;                            ///< the preintegrated interval
+  };
+  // The Jacobians (row-major, whitened) by the four blocks.
+  void poseJacobianI(const Linearisation& at, double* jacobian) const;
+  void speedBiasJacobianI(const Linearisation& at, double* jacobian) const;
+  void poseJacobianJ(const Linearisation& at, double* jacobian) const;
+  void speedBiasJacobianJ(const Linearisation& at, double* jacobian) const;
+
   std::shared_ptr<const ImuPreintegration> preintegration_;
   Eigen::Vector3d gravity_;
   Eigen::Matrix<double, 15, 15> sqrt_information_;
