@@ -17,29 +17,8 @@
 
 namespace dynslam::segmentation {
 
-void DepthThresholdParams::validate() const {
-  const auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
-  if (m < 2) fail("m = " + std::to_string(m) + ": 2-means needs at least 2 samples");
-  if (n < 1) fail("n = " + std::to_string(n) + ": must be at least 1");
-  const std::pair<const char*, double> margins[] = {{"e_person", e_person},
-                                                    {"e_car", e_car},
-                                                    {"e_other_nonrigid", e_other_nonrigid},
-                                                    {"e_other_rigid", e_other_rigid}};
-  for (const auto& [name, e] : margins)
-    if (!(e > 0)) fail(std::string(name) + " = " + std::to_string(e) + ": must be > 0 (metres)");
-  if (!(max_height_person >= 0))
-    fail("max_height_person = " + std::to_string(max_height_person) +
-         ": must be >= 0 (m; 0 = off)");
-  if (!(expected_depth_band >= 0 && expected_depth_band < 1))
-    fail("expected_depth_band = " + std::to_string(expected_depth_band) + ": must be in [0, 1)");
-  if (!(min_valid_fraction > 0 && min_valid_fraction <= 1))
-    fail("min_valid_fraction = " + std::to_string(min_valid_fraction) + ": must be in (0, 1]");
-}
-
 DepthThresholdSegmenter::DepthThresholdSegmenter(DepthThresholdParams params)
-    : params_(std::move(params)) {
-  params_.validate();
-}
+    : params_(std::move(params)) {}
 
 double DepthThresholdSegmenter::marginFor(const core::Detection& detection) const {
   if (detection.category == "person") return params_.e_person;

@@ -141,18 +141,10 @@ TEST(DepthThresholdSegmenter, ABoxPartlyOutsideTheImageIsClippedFirst) {
   EXPECT_TRUE(outside.roi.empty());
 }
 
-TEST(DepthThresholdSegmenter, RejectsBadInputAndBadParameters) {
+TEST(DepthThresholdSegmenter, RejectsADepthImageNotInMetres) {
   const cv::Mat mm(120, 160, CV_16UC1, cv::Scalar(2000));
   EXPECT_THROW(DepthThresholdSegmenter().segmentOne(mm, detection(kBox), 0), std::invalid_argument);
-  segmentation::DepthThresholdParams p;
-  p.m = 1;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
-  p = {};
-  p.e_car = 0;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
-  p = {};
-  p.min_valid_fraction = 1.5;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
+  EXPECT_THROW(DepthThresholdSegmenter().segment(mm, {detection(kBox)}), std::invalid_argument);
 }
 
 TEST(DepthThresholdSegmenter, TheLargerClusterVariantTakesTheMajorityOfTheCandidateBox) {
@@ -196,8 +188,6 @@ TEST(DepthThresholdSegmenter, MaxHeightLeavesTheWallBeyondTheTallestPersonOut) {
   const auto wallOnly = bounded.segment(depth, {detection({100, 20, 40, 60})}, {}, 100);
   EXPECT_TRUE(wallOnly[0].valid) << "nothing at a possible depth: every sample stays";
   EXPECT_DOUBLE_EQ(wallOnly[0].d_t, 5.0);
-  p.max_height_person = -1;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
 }
 
 // object_depth = mask_median (not the method): d_t is the median depth of the final mask, not

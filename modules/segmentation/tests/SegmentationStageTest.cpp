@@ -17,7 +17,9 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
                                              "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"
                                              "max_height_person = 2.2\nexpected_depth_band = 0.1\n"
                                              "retry_taken_surface = true\n"
-                                             "joint_occluders = true\n"),
+                                             "joint_occluders = true\n"
+                                             "object_cluster = occluder_aware\n"
+                                             "boxes = tracked_detections\n"),
                    "Segmentation");
   const auto& p = dynamic_cast<segmentation::SegmentationStage&>(*stage).options().params;
   EXPECT_EQ(p.m, 36);
@@ -62,8 +64,35 @@ TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) 
     EXPECT_NE(std::string(e.what()).find("m = 1"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("x.ini"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nmax_height_person = -2\n"), "S"),
-               core::ConfigError);
+  for (const char* bad : {"max_height_person = -2", "e_car = 0", "min_valid_fraction = 1.5",
+                          "min_valid_fraction = 0", "n = 0", "m = 2.5", "e_person = 0.5 m"})
+    EXPECT_THROW(stage.configure(core::IniConfig::fromText(std::string("[S]\n") + bad), "S"),
+                 core::ConfigError)
+        << bad;
+}
+
+// A setting that acts only through another is refused alone, naming both keys.
+TEST(SegmentationStage, SettingsThatActOnlyThroughAnotherAreRefusedAlone) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"retry_taken_surface = true", "object_cluster = occluder_aware"},
+      {"joint_occluders = true", "object_cluster = occluder_aware"},
+      {"expected_depth_band = 0.1", "boxes = tracked_detections"},
+      {"max_track_misses = 3", "boxes = predicted_tracks"}};
+  for (const auto& [setting, needed] : cases) {
+    segmentation::SegmentationStage stage;
+    try {
+      stage.configure(core::IniConfig::fromText(std::string("[S]\n") + setting, "s.ini"), "S");
+      FAIL() << setting << " accepted alone";
+    } catch (const core::ConfigError& e) {
+      const std::string what = e.what();
+      const std::string key = std::string(setting).substr(0, std::string(setting).find(' '));
+      EXPECT_NE(what.find(key), std::string::npos) << what;
+      EXPECT_NE(what.find(needed), std::string::npos) << what;
+      EXPECT_NE(what.find("s.ini"), std::string::npos) << what;
+    }
+    stage.configure(
+        core::IniConfig::fromText(std::string("[S]\n") + setting + "\n" + needed + "\n"), "S");
+  }
 }
 
 TEST(SegmentationStage, WritesOneMaskPerDetectionInOrder) {

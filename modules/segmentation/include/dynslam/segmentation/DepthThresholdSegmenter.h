@@ -59,52 +59,23 @@ enum class ObjectDepth {
   MaskMedian
 };
 
-/// The method's parameters (defaults: method.md section 1). Read from the ini by
-/// SegmentationOptions, which documents each key.
+/// The segmenter's settings. Keys, ranges, meanings: SegmentationOptions::describe() in
+/// SegmentationStage.cpp; docs/parameters.md.
 struct DepthThresholdParams {
-  int m = 64;                        ///< depth samples on the grid over the candidate box M
-  int n = 64;                        ///< depth samples on the grid over the upper half of the box
-  double e_person = 0.5;             ///< m; depth margin e for category "person"
-  double e_car = 3.0;                ///< m; depth margin e for category "car"
-  double e_other_nonrigid = 0.5;     ///< m; e for any other category with a non-rigid model
-  double e_other_rigid = 3.0;        ///< m; e for any other category with a rigid model
-  double min_valid_fraction = 0.25;  ///< of the m samples that must have depth, else not valid
-  /// NOT the method (0 = off): the tallest a person can be, m. A box h pixels tall holds
-  /// nothing of a person beyond max_height_person * fy / h (a taller person, or one farther
-  /// away, would have a smaller box), so the candidate samples beyond that depth are
-  /// background seen past the person and take no part in the 2-means, and the mask stops
-  /// there. A box cut by an occluder or the image's edge is smaller than the person: the bound
-  /// only loosens. People only: a car seen along its length reaches far beyond its nearest
-  /// point, which is what its box height measures (outdoor_street_high, 2.5 m for cars: car
-  /// mask recall 0.786 -> 0.584). Needs the camera's fy (segment()'s argument).
-  double max_height_person = 0;
-  /// NOT the method; only where segment() gets an expected depth (a track's). When neither
-  /// cluster lies within 15 % of it, the candidate samples within this fraction of it (at
-  /// least 3) are the object's cluster: a partly hidden person's own surface is then a third
-  /// depth between an occluder and the wall, or behind two occluders, that 2-means merged into
-  /// another cluster. 0 = off (the nearer cluster in ratio, whatever its distance).
+  int m = 64;
+  int n = 64;
+  double e_person = 0.5;  ///< m
+  double e_car = 3.0;     ///< m
+  double e_other_nonrigid = 0.5;
+  double e_other_rigid = 3.0;
+  double min_valid_fraction = 0.25;
+  double max_height_person = 0;  ///< m; 0 = off
   double expected_depth_band = 0;
-  /// NOT the method; with object_cluster = occluder_aware. A mask that the overlap step (step 9)
-  /// leaves empty, or with under a fifth of its pixels while another overlapping mask's d_t is
-  /// within 10 % of its own or nearer by less than e / 2 (its own d_t then lies on the flank of
-  /// the body in front), was cut on another object's surface (a partly hidden person given
-  /// its occluder's depth); two detections are not one surface, so it is cut again on what its
-  /// whole box shows more than e / 2 behind that surface and not beyond max_height_person's
-  /// depth (2-means: the nearer cluster when more than e apart, else all), that surface being
-  /// its occluder; with fewer than 4 such grid points an empty mask takes its other cluster
-  /// (when more than e away). Step 9 then runs again.
   bool retry_taken_surface = false;
-  /// NOT the method; with object_cluster = occluder_aware. When no single detection at the
-  /// near cluster's depth passes as the occluder, those of them together (their boxes' union)
-  /// are tested the same way: a person between two nearer people, each covering part of its
-  /// box, otherwise takes their surface as its own.
   bool joint_occluders = false;
   ObjectCluster object_cluster = ObjectCluster::Far;
   OverlapRule overlap_rule = OverlapRule::Nearer;
   ObjectDepth object_depth = ObjectDepth::ClusterMean;
-
-  /// Throws std::invalid_argument naming the first field out of range.
-  void validate() const;
 };
 
 class DepthThresholdSegmenter {
