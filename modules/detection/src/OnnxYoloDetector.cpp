@@ -13,9 +13,6 @@ OnnxYoloDetector::OnnxYoloDetector(OnnxYoloDetectorSettings settings, ClassMap c
   if (s.input_size < 32 || s.input_size % 32 != 0)
     throw DetectorError("YOLO input_size = " + std::to_string(s.input_size) +
                         ": must be a positive multiple of 32 (the coarsest stride)");
-  if (!(s.confidence > 0 && s.confidence < 1) || !(s.nms_iou > 0 && s.nms_iou <= 1))
-    throw DetectorError("YOLO confidence and nms_iou must lie in (0, 1)");
-  if (s.threads < 0) throw DetectorError("YOLO threads must be >= 0 (0: OpenCV's default)");
   // Checked first: OpenCV's own message for a missing file is an assertion deep in its parser.
   if (!std::ifstream(s.model, std::ios::binary))
     throw DetectorError("cannot read the YOLO model '" + s.model + "' (missing or unreadable)");
