@@ -1,7 +1,5 @@
 #include "dynslam/odometry/RgbdOdometryStage.h"
 
-#include <mrpt/config/CConfigFileBase.h>
-
 #include <opencv2/imgproc.hpp>
 #include <opencv2/rgbd.hpp>
 
@@ -44,30 +42,24 @@ double rotationDeg(const Eigen::Isometry3d& T) {
 
 }  // namespace
 
-void RgbdOdometryOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                             const std::string& s) {
-  MRPT_LOAD_CONFIG_VAR(method, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(min_depth, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_depth, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_depth_diff, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_points_part, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(keyframe_translation, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(keyframe_rotation_deg, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_translation, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_rotation_deg, double, c, s);
-}
-
-void RgbdOdometryOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                           const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(method, "rgbd_icp | rgbd (photometric) | icp (geometric)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_depth, "m; nearer pixels are not used");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth, "m; farther pixels are not used");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth_diff, "m; correspondences differing more are rejected");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_points_part, "fraction of pixels sampled per iteration");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(keyframe_translation, "m from the keyframe that start a new one");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(keyframe_rotation_deg, "deg from the keyframe that start a new one");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_translation, "m; a larger estimated motion is a failure");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_rotation_deg, "deg; a larger estimated motion is a failure");
+void RgbdOdometryOptions::describe(core::OptionVisitor& v) {
+  using core::Range;
+  v.word("method", method, {"rgbd_icp", "rgbd", "icp"},
+         "rgbd_icp: photometric and geometric | rgbd: photometric | icp: geometric (depth alone)");
+  v.key("min_depth", min_depth, Range::atLeast(0), "m; nearer pixels are not used");
+  v.key("max_depth", max_depth, Range::above(0), "m; farther pixels are not used");
+  v.key("max_depth_diff", max_depth_diff, Range::above(0),
+        "m; correspondences differing more are rejected");
+  v.key("max_points_part", max_points_part, Range{0, 1, true, false},
+        "fraction of pixels sampled per iteration");
+  v.key("keyframe_translation", keyframe_translation, Range::atLeast(0),
+        "m from the keyframe that starts a new one");
+  v.key("keyframe_rotation_deg", keyframe_rotation_deg, Range::atLeast(0),
+        "deg from the keyframe that starts a new one");
+  v.key("max_translation", max_translation, Range::above(0),
+        "m; a larger estimated motion is a failure");
+  v.key("max_rotation_deg", max_rotation_deg, Range::above(0),
+        "deg; a larger estimated motion is a failure");
 }
 
 struct RgbdOdometryStage::Impl {
@@ -92,12 +84,9 @@ void RgbdOdometryStage::configure(const core::IniConfig& cfg, const std::string&
   else if (o.method == "rgbd")
     impl_->odometry =
         cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff);
-  else if (o.method == "icp")
+  else  // icp (describe() admits no other word)
     impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff,
                                                     o.max_points_part);
-  else
-    throw core::ConfigError("[" + section + "] method = '" + o.method + "' in " + cfg.source() +
-                            ": expected rgbd_icp, rgbd or icp");
 }
 
 void RgbdOdometryStage::process(core::Frame& frame) {
