@@ -2,7 +2,6 @@
 
 #include "dynslam/io/ObservationConversion.h"
 
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
@@ -26,25 +25,14 @@ bool labelMatches(const std::string& wanted, const std::string& label) {
 
 }  // namespace
 
-void SensorSyncOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                           const std::string& s) {
-  MRPT_LOAD_CONFIG_VAR(camera_label, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(imu_label, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(gnss_label, string, c, s);
-  skip_frames_without_depth =
-      core::readBool(c, s, "skip_frames_without_depth", skip_frames_without_depth);
-  MRPT_LOAD_CONFIG_VAR(min_gnss_fix_quality, int, c, s);
-}
-
-void SensorSyncOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                         const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(camera_label, "sensorLabel of the RGB-D camera (empty: any)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(imu_label, "sensorLabel of the IMU (empty: any)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(gnss_label, "sensorLabel of the GNSS receiver (empty: any)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(skip_frames_without_depth,
-                               "true: drop RGB-D observations without depth; false: error");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_gnss_fix_quality,
-                               "GGA fixes of lower quality are dropped (1 GPS, 2 DGPS, 4 RTK)");
+void SensorSyncOptions::describe(core::OptionVisitor& v) {
+  v.key("camera_label", camera_label, "sensorLabel of the RGB-D camera (empty: any)");
+  v.key("imu_label", imu_label, "sensorLabel of the IMU (empty: any)");
+  v.key("gnss_label", gnss_label, "sensorLabel of the GNSS receiver (empty: any)");
+  v.key("skip_frames_without_depth", skip_frames_without_depth,
+        "true: drop RGB-D observations without depth; false: error");
+  v.key("min_gnss_fix_quality", min_gnss_fix_quality, core::Range::atLeast(0),
+        "GGA fixes of lower quality are dropped (1 GPS, 2 DGPS, 4 RTK)");
 }
 
 SensorSync::SensorSync(SensorSyncOptions options) : options_(std::move(options)) {}

@@ -6,8 +6,8 @@
 // the frame's own time are never lost to file order.
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Frame.h>
+#include <dynslam/core/Options.h>
 
-#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/obs/CObservation.h>
 
 #include <deque>
@@ -25,15 +25,16 @@ struct SyncError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct SensorSyncOptions : mrpt::config::CLoadableOptions {
-  std::string camera_label;                ///< sensorLabel of the RGB-D camera; "" takes any
-  std::string imu_label;                   ///< sensorLabel of the IMU; "" takes any
-  std::string gnss_label;                  ///< sensorLabel of the GNSS receiver; "" takes any
-  bool skip_frames_without_depth = false;  ///< false: a frame with no depth is an error
-  int min_gnss_fix_quality = 1;            ///< GGA fixes below this quality are dropped
+/// [SensorSync]: every key, its range and meaning in describe() (SensorSync.cpp);
+/// docs/parameters.md.
+struct SensorSyncOptions : core::Options {
+  std::string camera_label;
+  std::string imu_label;
+  std::string gnss_label;
+  bool skip_frames_without_depth = false;
+  int min_gnss_fix_quality = 1;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 /// What the stream held, for the run summary.
