@@ -23,8 +23,7 @@ DepthThresholdSegmenter::DepthThresholdSegmenter(DepthThresholdParams params)
 double DepthThresholdSegmenter::marginFor(const core::Detection& detection) const {
   if (detection.category == "person") return params_.e_person;
   if (detection.category == "car") return params_.e_car;
-  return detection.model == core::MotionModel::Rigid ? params_.e_other_rigid
-                                                     : params_.e_other_nonrigid;
+  return detection.model == core::MotionModel::Rigid ? params_.e_car : params_.e_person;
 }
 
 double DepthThresholdSegmenter::maxDepthFor(const core::Detection& detection, double fy) const {

@@ -37,11 +37,10 @@ void SegmentationOptions::describe(core::OptionVisitor& v) {
         "depth samples on an even grid over the candidate box (central half of the box)");
   v.key("n", p.n, Range::atLeast(1),
         "depth samples on an even grid over the upper half of the box (background)");
-  v.key("e_person", p.e_person, metres, "m; depth margin e of people (method: 0.5)");
-  v.key("e_car", p.e_car, metres, "m; depth margin e of cars (method: 3.0)");
-  v.key("e_other_nonrigid", p.e_other_nonrigid, metres,
-        "m; e of other classes mapped to non-rigid");
-  v.key("e_other_rigid", p.e_other_rigid, metres, "m; e of other classes mapped to rigid");
+  v.key("e_person", p.e_person, metres,
+        "m; depth margin e of people (method: 0.5), and of other classes mapped to non_rigid");
+  v.key("e_car", p.e_car, metres,
+        "m; depth margin e of cars (method: 3.0), and of other classes mapped to rigid");
   v.key("min_valid_fraction", p.min_valid_fraction, Range{0, 1, true, false},
         "of the m samples with depth, else the mask is not valid (empty)");
   v.key("max_height_person", p.max_height_person, Range::atLeast(0),

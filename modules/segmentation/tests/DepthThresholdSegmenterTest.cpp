@@ -101,6 +101,12 @@ TEST(DepthThresholdSegmenter, CarsUseTheirOwnMarginAndNeverTakeMissingDepth) {
   EXPECT_EQ(segmenter.marginFor(truck), 3.0);
   truck.model = core::MotionModel::NonRigid;
   EXPECT_EQ(segmenter.marginFor(truck), 0.5);
+  segmentation::DepthThresholdParams p;  // other classes take the margin of their motion model
+  p.e_car = 2.0;
+  p.e_person = 0.4;
+  EXPECT_EQ(DepthThresholdSegmenter(p).marginFor(truck), 0.4);
+  truck.model = core::MotionModel::Rigid;
+  EXPECT_EQ(DepthThresholdSegmenter(p).marginFor(truck), 2.0);
 
   const auto m = segmenter.segmentOne(depth, detection(kBox, "car"), 0);
   ASSERT_TRUE(m.valid);

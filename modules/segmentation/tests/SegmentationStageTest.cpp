@@ -13,8 +13,7 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   segmentation::registerStages(registry);
   auto stage = registry.create("Segmentation");
   stage->configure(core::IniConfig::fromText("[Segmentation]\nm = 36\nn = 25\ne_person = 0.4\n"
-                                             "e_car = 2.5\ne_other_rigid = 2\n"
-                                             "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"
+                                             "e_car = 2.5\nmin_valid_fraction = 0.5\n"
                                              "max_height_person = 2.2\nexpected_depth_band = 0.1\n"
                                              "retry_taken_surface = true\n"
                                              "joint_occluders = true\n"
@@ -26,8 +25,6 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   EXPECT_EQ(p.n, 25);
   EXPECT_EQ(p.e_person, 0.4);
   EXPECT_EQ(p.e_car, 2.5);
-  EXPECT_EQ(p.e_other_rigid, 2.0);
-  EXPECT_EQ(p.e_other_nonrigid, 0.3);
   EXPECT_EQ(p.min_valid_fraction, 0.5);
   EXPECT_EQ(p.max_height_person, 2.2);
   EXPECT_EQ(p.expected_depth_band, 0.1);

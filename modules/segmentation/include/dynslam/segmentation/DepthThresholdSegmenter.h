@@ -66,8 +66,6 @@ struct DepthThresholdParams {
   int n = 64;
   double e_person = 0.5;  ///< m
   double e_car = 3.0;     ///< m
-  double e_other_nonrigid = 0.5;
-  double e_other_rigid = 3.0;
   double min_valid_fraction = 0.25;
   double max_height_person = 0;  ///< m; 0 = off
   double expected_depth_band = 0;
@@ -84,7 +82,8 @@ class DepthThresholdSegmenter {
 
   const DepthThresholdParams& params() const { return params_; }
 
-  /// The margin e used for a detection: by category, else by its motion model.
+  /// The margin e used for a detection: e_person for people and other non-rigid classes,
+  /// e_car for cars and other rigid classes.
   double marginFor(const core::Detection& detection) const;
 
   /// The farthest the detection's object can be by max_height_person and the box's height;
