@@ -20,17 +20,13 @@ void FloorRemovalOptions::describe(core::OptionVisitor& v) {
   v.key("min_inliers", p.min_inliers, Range::atLeast(3),
         "samples on the plane for a floor to count as seen");
   v.key("margin_m", margin_m, Range::atLeast(0),
-        "m; mask pixels less than this (plus margin_sigmas sigma(z)) above the floor leave the "
-        "mask");
-  v.key("margin_sigmas", margin_sigmas, Range::atLeast(0),
-        "depth-noise sigmas added to margin_m at each pixel's depth");
+        "m; mask pixels less than this above the floor (or below it) leave the mask");
 }
 
 size_t removeFloorPixels(const cv::Mat& depth, const core::CameraIntrinsics& K,
                          const FloorPlane& floor, const FloorRemovalOptions& options,
                          core::ObjectMask& mask) {
   if (mask.mask.empty()) return 0;
-  const double sigma2 = options.margin_sigmas * options.plane.depth_sigma_z2;
   // height = z (n . ray) + c with ray = ((u - cx) / fx, (v - cy) / fy, 1): one term per column
   // and one per row.
   std::vector<double> column(size_t(mask.roi.width));
@@ -46,7 +42,7 @@ size_t removeFloorPixels(const cv::Mat& depth, const core::CameraIntrinsics& K,
       const double z = d[x];
       if (!m[x] || !(z > 0)) continue;
       const double height = z * (column[size_t(x)] + row) + floor.offset;
-      if (height < options.margin_m + sigma2 * z * z) {
+      if (height < options.margin_m) {
         m[x] = 0;
         ++removed;
       }

@@ -152,14 +152,13 @@ TEST(FloorRemovalStage, CutsTheFloorAtAPersonsFeetAndKeepsThePerson) {
 
 TEST(FloorRemovalStage, ReadsItsKeysAndNamesBadValues) {
   segmentation::FloorRemovalStage stage;
-  stage.configure(core::IniConfig::fromText("[F]\nmargin_m = 0.05\nmargin_sigmas = 1\n"
+  stage.configure(core::IniConfig::fromText("[F]\nmargin_m = 0.05\n"
                                             "max_tilt_deg = 15\nmin_inliers = 40\n"
                                             "sample_stride_px = 4\niterations = 50\n"
                                             "inlier_m = 0.03\ndepth_sigma_z2 = 0.002\n"
                                             "max_depth_m = 5\n"),
                   "F");
   EXPECT_EQ(stage.options().margin_m, 0.05);
-  EXPECT_EQ(stage.options().margin_sigmas, 1.0);
   EXPECT_EQ(stage.options().plane.max_tilt_deg, 15.0);
   EXPECT_EQ(stage.options().plane.min_inliers, 40);
   EXPECT_EQ(stage.options().plane.sample_stride_px, 4);
