@@ -48,10 +48,6 @@ void RgbdOdometryOptions::describe(core::OptionVisitor& v) {
          "rgbd_icp: photometric and geometric | rgbd: photometric | icp: geometric (depth alone)");
   v.key("min_depth", min_depth, Range::atLeast(0), "m; nearer pixels are not used");
   v.key("max_depth", max_depth, Range::above(0), "m; farther pixels are not used");
-  v.key("max_depth_diff", max_depth_diff, Range::above(0),
-        "m; correspondences differing more are rejected");
-  v.key("max_points_part", max_points_part, Range{0, 1, true, false},
-        "fraction of pixels sampled per iteration");
   v.key("keyframe_translation", keyframe_translation, Range::atLeast(0),
         "m from the keyframe that starts a new one");
   v.key("keyframe_rotation_deg", keyframe_rotation_deg, Range::atLeast(0),
@@ -77,16 +73,16 @@ RgbdOdometryStage::~RgbdOdometryStage() = default;
 void RgbdOdometryStage::configure(const core::IniConfig& cfg, const std::string& section) {
   core::loadOptionsStrict(options_, cfg, section);
   const auto& o = options_;
-  const cv::Mat noK;  // the camera matrix is set from the first frame's intrinsics
+  // The camera matrix is set from the first frame's intrinsics; the rejection of
+  // correspondences more than 7 cm apart in depth and the share of pixels sampled (7 %) are
+  // OpenCV's defaults.
+  const cv::Mat noK;
   if (o.method == "rgbd_icp")
-    impl_->odometry = cv::rgbd::RgbdICPOdometry::create(noK, o.min_depth, o.max_depth,
-                                                        o.max_depth_diff, o.max_points_part);
+    impl_->odometry = cv::rgbd::RgbdICPOdometry::create(noK, o.min_depth, o.max_depth);
   else if (o.method == "rgbd")
-    impl_->odometry =
-        cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff);
+    impl_->odometry = cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth);
   else  // icp (describe() admits no other word)
-    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff,
-                                                    o.max_points_part);
+    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth);
 }
 
 void RgbdOdometryStage::process(core::Frame& frame) {

@@ -17,8 +17,6 @@ struct RgbdOdometryOptions : core::Options {
   std::string method = "rgbd_icp";
   double min_depth = 0.3;
   double max_depth = 4.0;
-  double max_depth_diff = 0.07;
-  double max_points_part = 0.07;
   double keyframe_translation = 0.10;
   double keyframe_rotation_deg = 10.0;
   double max_translation = 0.5;
