@@ -31,8 +31,6 @@ void SensorSyncOptions::describe(core::OptionVisitor& v) {
   v.key("gnss_label", gnss_label, "sensorLabel of the GNSS receiver (empty: any)");
   v.key("skip_frames_without_depth", skip_frames_without_depth,
         "true: drop RGB-D observations without depth; false: error");
-  v.key("min_gnss_fix_quality", min_gnss_fix_quality, core::Range::atLeast(0),
-        "GGA fixes of lower quality are dropped (1 GPS, 2 DGPS, 4 RTK)");
 }
 
 SensorSync::SensorSync(SensorSyncOptions options) : options_(std::move(options)) {}
@@ -97,7 +95,7 @@ void SensorSync::push(const mrpt::obs::CObservation::Ptr& obs, std::vector<core:
     lateCheck("GNSS");
     ++counts_.gnss;
     auto fix = gnssFixFrom(*gps);
-    if (!fix || fix->fix_quality < options_.min_gnss_fix_quality) {
+    if (!fix || fix->fix_quality < 1) {  // GGA quality 0: no fix
       ++counts_.gnss_dropped;
       return;
     }

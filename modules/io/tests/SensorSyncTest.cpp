@@ -200,15 +200,13 @@ TEST(SensorSyncOptions, ReadsItsKeysAndNamesABadValue) {
       o,
       dynslam::core::IniConfig::fromText(
           "[SensorSync]\ncamera_label = FRONT\nimu_label = IMU\ngnss_label = GPS\n"
-          "skip_frames_without_depth = true\nmin_gnss_fix_quality = 4\n"),
+          "skip_frames_without_depth = true\n"),
       "SensorSync");
   EXPECT_EQ(o.camera_label, "FRONT");
   EXPECT_EQ(o.imu_label, "IMU");
   EXPECT_EQ(o.gnss_label, "GPS");
   EXPECT_TRUE(o.skip_frames_without_depth);
-  EXPECT_EQ(o.min_gnss_fix_quality, 4);
-  for (const char* bad : {"skip_frames_without_depth = maybe", "min_gnss_fix_quality = -1",
-                          "min_gnss_fix_quality = RTK", "camera = FRONT"}) {
+  for (const char* bad : {"skip_frames_without_depth = maybe", "camera = FRONT"}) {
     try {
       dynslam::core::loadOptionsStrict(
           o, dynslam::core::IniConfig::fromText(std::string("[SensorSync]\n") + bad, "s.ini"),

@@ -32,7 +32,6 @@ struct SensorSyncOptions : core::Options {
   std::string imu_label;
   std::string gnss_label;
   bool skip_frames_without_depth = false;
-  int min_gnss_fix_quality = 1;
 
   void describe(core::OptionVisitor& v) override;
 };
@@ -41,7 +40,7 @@ struct SensorSyncOptions : core::Options {
 struct SyncCounts {
   size_t observations = 0;
   size_t rgbd = 0, imu = 0, gnss = 0;
-  size_t gnss_dropped = 0;  ///< no GGA, or quality below min_gnss_fix_quality
+  size_t gnss_dropped = 0;  ///< no GGA, or GGA quality 0 (no fix)
   size_t other = 0;         ///< observation types or labels the pipeline does not use
   size_t frames = 0;
   size_t frames_without_depth = 0;
