@@ -55,8 +55,8 @@ bool insideAny(const std::vector<cv::Rect>& boxes, cv::Point p) {
 }
 
 // A detector's box edges are a few pixels off (GroundTruthDetector's 3 px jitter; a box cut at
-// the image's edge ended at 475-479 of 480 rows and passed for one whose feet show): edges
-// within this many pixels of each other or of the image's edge say nothing.
+// the image's edge may end a few rows short of it): edges within this many pixels of each other
+// or of the image's edge say nothing. Seen: docs/notes/perception.md, 2026-11-28.
 int edgeTolerance(int rows) { return std::max(2, rows / 50); }
 
 // What the boxes' bottoms say of whether the detection boxed `front` stands in front of the one
@@ -82,9 +82,7 @@ std::optional<bool> bottomsSayInFront(const cv::Rect& front, const cv::Rect& bac
 // front of `back`; a person behind `back` shows there at its own, farther, depth). When the
 // fronts' candidate boxes lie wholly inside `back`'s box, (b) cannot tell, and of two people
 // the one whose box reaches higher in the image is the nearer (heads of similar heights; the
-// bottoms said nothing): indoor_people_high, the surface of the person in front was taken as
-// the hidden person's in most of the severe-occlusion cases that (b) left undecided (seed 16:
-// 1.29 m for 2.44 m).
+// bottoms said nothing). Why: docs/notes/perception.md, 2026-11-28 (surfaceInFront).
 bool surfaceInFront(const cv::Mat& depth, const std::vector<cv::Rect>& fronts,
                     const cv::Rect& back, const TwoMeansResult& c, double margin, int samples) {
   int nearSamples = 0, nearInside = 0;
@@ -140,9 +138,8 @@ constexpr double kFewBehind = 0.25;
 // far cluster's mean would blur into one depth: of two clusters more than `e` apart, the
 // nearer, as without an occluder. When the occluder hides nearly all of the candidate box, the
 // object is sought where it can show: m grid points over the whole box `roi` outside the
-// occluders' boxes and more than `margin` behind it, split by the same rule. (Tried: only the upper
-// 0.5-0.75 of the box, to keep the floor out, and the nearest compact run of depths rather
-// than 2-means: both worse on indoor_people_high.)
+// occluders' boxes and more than `margin` behind it, split by the same rule. (What else was
+// tried: docs/notes/perception.md, 2026-11-28, behindOccluder.)
 TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi,
                               const std::vector<cv::Rect>& occluders,
                               const std::vector<float>& sorted, const TwoMeansResult& c,
@@ -215,9 +212,7 @@ bool objectAtExpected(const cv::Mat& depth, const cv::Rect& roi, int m, double e
 // with another overlapping mask on the same body (d_t within kSameSurface of its own, or nearer
 // by less than e / 2: the flank of the body in front, whose d_t is its front), lost its surface
 // to it. The flank: a hidden person's mask often holds the side of the person in front, 0.1-0.2
-// m behind its front (indoor_people_high seed 2: 1.36 against 1.19 m, 14 %); counting it
-// lowered the severe d_t error after Retrack from 4.29 / 5.90 to 4.12 / 5.66 % (seeds 1-8 /
-// 9-16).
+// m behind its front. Measured: docs/notes/perception.md, 2026-11-28 (retry_taken_surface).
 constexpr double kTakenFraction = 0.2;
 constexpr double kSameSurface = 0.9;
 

@@ -8,13 +8,13 @@ namespace dynslam::segmentation {
 namespace {
 
 /// Depth step, m, across which two neighbouring pixels are one surface: a body's surface changes
-/// by millimetres between pixels, two people walking less than e apart by decimetres.
-/// indoor_people_high: mask IoU 0.808 / 0.808 / 0.806 with 0.03 / 0.05 / 0.1.
+/// by millimetres between pixels, two people walking less than e apart by decimetres (3 and 10
+/// cm measured alike: docs/notes/perception.md, 2026-11-28, overlap_rule).
 constexpr float kSurfaceStep = 0.05f;
 
 /// The search in `area` for `n` masks, one bit each in a `Bits` per pixel: 8 bits cover the
-/// usual few people at an eighth of the memory traffic of 64 (indoor_people_high: about 15 %
-/// less time per frame).
+/// usual few people at an eighth of the memory traffic of 64 (the time it saves:
+/// docs/notes/perception.md, 2026-11-28, overlap_rule).
 template <typename Bits>
 void resolveInArea(std::vector<core::ObjectMask>& masks, size_t n, const cv::Mat& depth,
                    cv::Rect area) {

@@ -17,8 +17,8 @@ namespace dynslam::segmentation {
 /// Which 2-means cluster of the candidate box's depths is the object (step 3).
 enum class ObjectCluster {
   Far,     ///< method.md: the far cluster (the near one is an occluder)
-  Larger,  ///< the cluster with more samples (the far one on a tie); NOT the method: a variant
-           ///< that bench-segmentation compares, for boxes whose centre shows background
+  Larger,  ///< the cluster with more samples (the far one on a tie); not the method: for boxes
+           ///< whose centre shows background
   /// NOT the method: when the two clusters are more than e apart, the near one is an occluder
   /// only if another detection claims it (its box overlaps the candidate box, its bottom edge
   /// is lower in the image, i.e. it stands nearer on the floor, and one of its own clusters is
@@ -33,17 +33,15 @@ enum class OverlapRule {
   /// NOT the method: the object whose d_t is closest to the pixel's depth (the nearer one on a
   /// tie). With e = 0.5 m the near person's range [T_min, T_max] often holds a person walking
   /// less than e behind; "nearer" then gives the near person all of the other's pixels in
-  /// the overlap. indoor_people_high (occluder_aware): mask IoU 0.703 -> 0.734.
+  /// the overlap. Measured gain: docs/notes/perception.md, 2026-11-28 (overlap_rule).
   ClosestDepth,
   /// NOT the method: a shared pixel goes to the object whose surface reaches it, searching
   /// breadth-first from each mask's own pixels across neighbours less than 5 cm apart in depth
   /// (resolveByConnectivity); pixels no surface reaches fall back to closest_depth. A person's
   /// body slants and bends (turned shoulders, swinging arms, a leg stepping back), so its
   /// pixels are often nearer another person's d_t than its own; a surface is continuous where
-  /// two people are not. indoor_people_high (occluder_aware, every person): mask IoU 0.775 ->
-  /// 0.831 against closest_depth, the pixels lost to another object 18 % -> 8 % of the visible
-  /// ones; 0.9-1.3 ms per frame against 0.38 for closest_depth and 0.31 for nearer
-  /// (bench-segmentation --min-visible 0, 2026-11-23).
+  /// two people are not. Measured gain and cost: docs/notes/perception.md, 2026-11-28
+  /// (overlap_rule).
   Connected
 };
 
@@ -53,9 +51,8 @@ enum class ObjectDepth {
   /// NOT the method: the median depth of the object's final mask (after step 9), or the
   /// cluster mean when the mask is empty. The cluster mean is the mean of 10-40 grid samples
   /// of the candidate box, which catch the floor, an arm swung forward or a neighbour's edge;
-  /// the mask holds the whole visible surface. indoor_people_high (shipped segmentation,
-  /// seed 1): mean d_t error, unoccluded 5.61 -> 2.17 %, mild occlusion 4.65 -> 2.28 %,
-  /// severe 16.02 -> 11.70 % (bench-segmentation, 2026-11-24).
+  /// the mask holds the whole visible surface. Measured gain: docs/notes/perception.md,
+  /// 2026-11-28 (object_depth).
   MaskMedian
 };
 
@@ -87,7 +84,14 @@ class DepthThresholdSegmenter {
   double marginFor(const core::Detection& detection) const;
 
   /// The farthest the detection's object can be by max_height_person and the box's height;
-  /// infinity when that is off, for other categories than person, or with fy <= 0.
+  /// infinity when that is off, for other categories than person, or with fy <= 0. A box h
+  /// pixels tall holds nothing of a person beyond max_height_person * fy / h (a taller person,
+  /// or one farther away, would have a smaller box), so candidate samples beyond that depth are
+  /// background seen past the person: they take no part in the 2-means, and the mask stops
+  /// there. A box cut by an occluder or the image's edge is smaller than the person: the bound
+  /// only loosens. People only: a car seen along its length reaches far beyond its nearest
+  /// point, which is what its box height measures (measured: docs/notes/perception.md,
+  /// 2026-11-28, max_height_person).
   double maxDepthFor(const core::Detection& detection, double fy) const;
 
   /// Steps 1-8 for one box, without mutual occlusion. `depth`: CV_32FC1 metres, 0 = invalid

@@ -2,8 +2,8 @@
 // The floor under the objects, fitted to the depth image (not the method). A person's box
 // reaches down to the floor at its feet, where the floor has the person's depth, so the
 // depth-threshold mask (method.md section 1) takes a band of floor; corners on that floor are
-// then classified with the walker and lost as static constraints (outdoor_street_high: half of
-// the background features wrongly classified dynamic lie within 5 cm of the ground).
+// then classified with the walker and lost as static constraints (how many: docs/notes/
+// perception.md, 2026-11-28).
 #include <dynslam/core/Frame.h>
 
 #include <Eigen/Core>
