@@ -73,6 +73,9 @@ struct DepthThresholdParams {
   ObjectDepth object_depth = ObjectDepth::ClusterMean;
 };
 
+struct BoxClusters;    // src/ClusterChoice.h
+struct ClusterChoice;  // src/ClusterChoice.h
+
 class DepthThresholdSegmenter {
  public:
   explicit DepthThresholdSegmenter(DepthThresholdParams params = {});
@@ -124,9 +127,21 @@ class DepthThresholdSegmenter {
                                int detectionIndex, const TwoMeansResult& clusters,
                                bool objectIsNear, double maxDepth) const;
 
+  /// OccluderAware, steps 1-3 for every box (their margins and max_height_person's bounds too).
+  std::vector<BoxClusters> clusterBoxes(const cv::Mat& depth,
+                                        const std::vector<core::Detection>& detections,
+                                        double fy) const;
   /// Step 9 by params_.overlap_rule; then, with object_depth = mask_median, each d_t from its
   /// final mask.
   void resolveOverlaps(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) const;
+  /// retry_taken_surface: step 9; then each mask the step left without its surface
+  /// (takenSurface) is cut again behind the surface it was cut on (clustersBehind; with nothing
+  /// there, an empty mask takes its other cluster when more than e away), and step 9 runs again.
+  /// `chosen`: the clusters each mask of `masks` was cut on.
+  void retryTakenSurfaces(const cv::Mat& depth, const std::vector<core::Detection>& detections,
+                          const std::vector<BoxClusters>& boxes,
+                          const std::vector<ClusterChoice>& chosen,
+                          std::vector<core::ObjectMask>& masks) const;
 
   DepthThresholdParams params_;
 };
