@@ -40,6 +40,19 @@ double rotationDeg(const Eigen::Isometry3d& T) {
   return Eigen::AngleAxisd(T.rotation()).angle() * 180.0 / M_PI;
 }
 
+// The frame's grey image; a black one for method icp, which works on depth alone.
+cv::Mat greyOf(const core::Frame& frame, const std::string& method) {
+  cv::Mat grey;
+  if (!frame.rgb.empty())
+    cv::cvtColor(frame.rgb, grey, cv::COLOR_BGR2GRAY);
+  else if (method != "icp")
+    throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
+                             " has no colour image; method = icp works on depth alone");
+  else
+    grey = cv::Mat(frame.depth.size(), CV_8UC1, cv::Scalar(0));
+  return grey;
+}
+
 }  // namespace
 
 void RgbdOdometryOptions::describe(core::OptionVisitor& v) {
@@ -65,6 +78,30 @@ struct RgbdOdometryStage::Impl {
   Eigen::Isometry3d T_keyframe_last = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d T_world_last = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d last_motion = Eigen::Isometry3d::Identity();  // previous -> current
+
+  // A frame used as the source of compute() is not reusable as a destination (OpenCV keeps
+  // source-only data in its cache), so a keyframe always gets a frame object of its own.
+  cv::Ptr<cv::rgbd::OdometryFrame> makeKeyframe(const cv::Mat& grey, const cv::Mat& depth) const {
+    auto kf = cv::rgbd::OdometryFrame::create(grey, depth);
+    odometry->prepareFrameCache(kf, cv::rgbd::OdometryFrame::CACHE_DST);
+    return kf;
+  }
+
+  // The motion keyframe <- current, aligned from `predicted`; nullopt when the alignment failed,
+  // gave no rigid motion, or a step from the last frame larger than the options allow.
+  std::optional<Eigen::Isometry3d> measure(const cv::Mat& grey, const cv::Mat& depth,
+                                           const Eigen::Isometry3d& predicted,
+                                           const RgbdOdometryOptions& o) {
+    auto current = cv::rgbd::OdometryFrame::create(grey, depth);
+    cv::Mat Rt;
+    if (!odometry->compute(current, keyframe, Rt, toCv(predicted))) return std::nullopt;
+    const auto measured = rigidMotion(Rt);
+    if (!measured) return std::nullopt;
+    const Eigen::Isometry3d step = T_keyframe_last.inverse() * *measured;
+    if (step.translation().norm() > o.max_translation || rotationDeg(step) > o.max_rotation_deg)
+      return std::nullopt;
+    return measured;
+  }
 };
 
 RgbdOdometryStage::RgbdOdometryStage() : impl_(std::make_unique<Impl>()) {}
@@ -90,26 +127,11 @@ void RgbdOdometryStage::process(core::Frame& frame) {
   if (frame.depth.empty())
     throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
                              " has no depth");
-  cv::Mat grey;
-  if (!frame.rgb.empty())
-    cv::cvtColor(frame.rgb, grey, cv::COLOR_BGR2GRAY);
-  else if (options_.method != "icp")
-    throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
-                             " has no colour image; method = icp works on depth alone");
-  else
-    grey = cv::Mat(frame.depth.size(), CV_8UC1, cv::Scalar(0));
-
-  // A frame used as the source of compute() is not reusable as a destination (OpenCV keeps
-  // source-only data in its cache), so a keyframe always gets a frame object of its own.
-  const auto makeKeyframe = [&] {
-    auto kf = cv::rgbd::OdometryFrame::create(grey, frame.depth);
-    s.odometry->prepareFrameCache(kf, cv::rgbd::OdometryFrame::CACHE_DST);
-    return kf;
-  };
-  if (!s.keyframe) {
+  const cv::Mat grey = greyOf(frame, options_.method);
+  if (!s.keyframe) {  // the first frame: the world's origin and the first keyframe
     const auto& k = frame.intrinsics;
     s.odometry->setCameraMatrix((cv::Mat_<double>(3, 3) << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1));
-    s.keyframe = makeKeyframe();
+    s.keyframe = s.makeKeyframe(grey, frame.depth);
     ++keyframes_;
     ++frames_;
     frame.T_world_camera = Eigen::Isometry3d::Identity();
@@ -118,18 +140,9 @@ void RgbdOdometryStage::process(core::Frame& frame) {
 
   // Predict with constant velocity; it is the initial guess and the fallback on failure.
   const Eigen::Isometry3d predicted = s.T_keyframe_last * s.last_motion;
-  auto current = cv::rgbd::OdometryFrame::create(grey, frame.depth);
-  cv::Mat Rt;
-  const bool converged = s.odometry->compute(current, s.keyframe, Rt, toCv(predicted));
-  const auto measured = converged ? rigidMotion(Rt) : std::nullopt;  // keyframe <- current
-  bool ok = measured.has_value();
-  Eigen::Isometry3d T_keyframe_current = ok ? *measured : predicted;
-  const Eigen::Isometry3d step = s.T_keyframe_last.inverse() * T_keyframe_current;
-  if (ok && (step.translation().norm() > options_.max_translation ||
-             rotationDeg(step) > options_.max_rotation_deg)) {
-    ok = false;
-    T_keyframe_current = predicted;
-  }
+  const auto measured = s.measure(grey, frame.depth, predicted, options_);
+  const bool ok = measured.has_value();
+  const Eigen::Isometry3d T_keyframe_current = ok ? *measured : predicted;
   if (!ok) {
     ++failures_;
     MRPT_LOG_WARN_STREAM("frame " << frame.index << ": odometry failed; using the prediction");
@@ -142,7 +155,7 @@ void RgbdOdometryStage::process(core::Frame& frame) {
   s.T_keyframe_last = T_keyframe_current;
   if (!ok || T_keyframe_current.translation().norm() > options_.keyframe_translation ||
       rotationDeg(T_keyframe_current) > options_.keyframe_rotation_deg) {
-    s.keyframe = makeKeyframe();
+    s.keyframe = s.makeKeyframe(grey, frame.depth);
     s.T_world_keyframe = T_world_current;
     s.T_keyframe_last = Eigen::Isometry3d::Identity();
     ++keyframes_;

@@ -17,6 +17,12 @@
 #include <string>
 #include <vector>
 
+namespace mrpt::obs {
+class CObservation3DRangeScan;
+class CObservationIMU;
+class CObservationGPS;
+}  // namespace mrpt::obs
+
 namespace dynslam::io {
 
 /// Bad stream order (a sensor's time going backwards, a sample arriving after the frame it
@@ -66,6 +72,11 @@ class SensorSync {
   void emitUpTo(double t, std::vector<core::Frame>& out);
   void emit(core::Frame& frame, std::vector<core::Frame>& out);
   void checkOrder(const mrpt::obs::CObservation& obs, double t, bool strictly_increasing);
+  /// A sample at `t` (IMU, GNSS) must come before the frame it belongs to was handed out.
+  void checkNotLate(const char* what, double t) const;
+  void takeRgbd(const mrpt::obs::CObservation3DRangeScan& scan);
+  void takeImu(const mrpt::obs::CObservationIMU& imu);
+  void takeGnss(const mrpt::obs::CObservationGPS& gps);
 
   SensorSyncOptions options_;
   SyncCounts counts_;
