@@ -412,6 +412,35 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   std::printf("\n");
 }
 
+/// The segmenter's settings as a pipeline reads [Segmentation], from --pipeline INI or
+/// --seg-config INI (a system's [Segmentation] alone: each frame is still segmented alone, and
+/// a bench of a system's masks needs no copy of its keys), else the method as method.md states
+/// it (methodParams(); the stage's defaults are the shipped configuration); --seg-set then
+/// overrides in any section. `pipeline`: the --pipeline ini.
+struct SegmentationSetup {
+  segmentation::DepthThresholdParams params;
+  std::optional<core::IniConfig> pipeline;
+};
+
+SegmentationSetup segmentationSetup(const core::CommandLine& cl) {
+  const std::string pipelineIni = cl.valueOr("--pipeline", "");
+  const std::string segConfig = cl.valueOr("--seg-config", "");
+  if (!pipelineIni.empty() && !segConfig.empty())
+    throw core::UsageError(
+        "--pipeline and --seg-config: give one (--pipeline reads [Segmentation] too)");
+  const std::string iniFile = pipelineIni.empty() ? segConfig : pipelineIni;
+  auto segIni = iniFile.empty() ? core::IniConfig::fromText("", "--seg-set")
+                                : core::IniConfig::fromFile(iniFile, cl.all("--seg-set"));
+  if (iniFile.empty())
+    for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
+  segmentation::SegmentationOptions options;
+  if (iniFile.empty()) options.params = segmentation::methodParams();
+  core::loadOptionsStrict(options, segIni, "Segmentation");
+  SegmentationSetup setup{options.params, std::nullopt};
+  if (!pipelineIni.empty()) setup.pipeline = segIni;
+  return setup;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -430,25 +459,8 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> inis = cl.all("--config");
     if (inis.empty()) inis = {"params/sim/indoor_people_high.ini"};
-    // The segmenter's parameters as the pipeline reads them ([Segmentation]; defaults: the
-    // method's, or those of the --pipeline ini, which --seg-set then overrides in any section).
-    // --seg-config INI reads [Segmentation] alone from a system ini (each frame still segmented
-    // alone), so a bench of a system's masks needs no copy of its keys.
-    const std::string pipelineIni = cl.valueOr("--pipeline", "");
-    const std::string segConfig = cl.valueOr("--seg-config", "");
-    if (!pipelineIni.empty() && !segConfig.empty())
-      throw core::UsageError(
-          "--pipeline and --seg-config: give one (--pipeline reads [Segmentation] too)");
-    const std::string iniFile = pipelineIni.empty() ? segConfig : pipelineIni;
-    auto segIni = iniFile.empty() ? core::IniConfig::fromText("", "--seg-set")
-                                  : core::IniConfig::fromFile(iniFile, cl.all("--seg-set"));
-    if (iniFile.empty())
-      for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
-    std::optional<core::IniConfig> pipeline;
-    if (!pipelineIni.empty()) pipeline = segIni;
-    segmentation::SegmentationStage stage;
-    stage.configure(segIni, "Segmentation");
-    const segmentation::DepthThresholdSegmenter segmenter(stage.options().params);
+    const SegmentationSetup setup = segmentationSetup(cl);
+    const segmentation::DepthThresholdSegmenter segmenter(setup.params);
     const auto every =
         static_cast<size_t>(std::max(1LL, cl.optionalInteger("--every").value_or(3)));
     const std::string boxes = cl.valueOr("--boxes", "amodal");
@@ -468,7 +480,7 @@ int main(int argc, char** argv) {
     }
     for (const auto& ini : inis)
       benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper,
-                pipeline, cases.is_open() ? &cases : nullptr);
+                setup.pipeline, cases.is_open() ? &cases : nullptr);
     dumper.write();
     return 0;
   });

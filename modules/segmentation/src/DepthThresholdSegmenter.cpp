@@ -28,6 +28,18 @@ constexpr int kExpectedMinSamples = 3;
 
 }  // namespace
 
+DepthThresholdParams methodParams() {
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::Far;
+  p.overlap_rule = OverlapRule::Nearer;
+  p.object_depth = ObjectDepth::ClusterMean;
+  p.max_height_person = 0;
+  p.joint_occluders = false;
+  p.retry_taken_surface = false;
+  p.expected_depth_band = 0;
+  return p;
+}
+
 DepthThresholdSegmenter::DepthThresholdSegmenter(DepthThresholdParams params)
     : params_(std::move(params)) {}
 

@@ -32,26 +32,32 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   EXPECT_TRUE(p.joint_occluders);
 }
 
-TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) {
+TEST(SegmentationStage, DefaultsAreTheShippedOnesAndBadKeysOrValuesAreConfigErrors) {
   segmentation::SegmentationStage stage;
   stage.configure(core::IniConfig::fromText(""), "Segmentation");
-  EXPECT_EQ(stage.options().params.m, 64);
-  EXPECT_EQ(stage.options().params.n, 64);
-  EXPECT_EQ(stage.options().params.e_person, 0.5);
-  EXPECT_EQ(stage.options().params.e_car, 3.0);
-  EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Far);
-  EXPECT_EQ(stage.options().params.max_height_person, 0.0) << "no size bound unless asked";
+  const auto& p = stage.options().params;
+  EXPECT_EQ(p.m, 64);
+  EXPECT_EQ(p.n, 64);
+  EXPECT_EQ(p.e_person, 0.5);
+  EXPECT_EQ(p.e_car, 3.0);
+  // params/sim_vio.ini's [Segmentation], not the method (methodParams()).
+  EXPECT_EQ(p.object_cluster, segmentation::ObjectCluster::OccluderAware);
+  EXPECT_EQ(p.overlap_rule, segmentation::OverlapRule::Connected);
+  EXPECT_EQ(p.object_depth, segmentation::ObjectDepth::MaskMedian);
+  EXPECT_EQ(p.max_height_person, 2.2);
+  EXPECT_TRUE(p.joint_occluders);
+  EXPECT_FALSE(p.retry_taken_surface) << "a per-instance setting";
+  EXPECT_EQ(p.expected_depth_band, 0.0) << "a per-instance setting";
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\ne_pedestrian = 1\n"), "S"),
                core::ConfigError);
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = near\n"), "S"),
                core::ConfigError)
       << "names the section and the file";
-  stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = larger\n"), "S");
+  stage.configure(
+      core::IniConfig::fromText("[S]\nobject_cluster = larger\njoint_occluders = false\n"), "S");
   EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Larger);
-  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::ClusterMean)
-      << "the method's d_t unless asked";
-  stage.configure(core::IniConfig::fromText("[S]\nobject_depth = mask_median\n"), "S");
-  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::MaskMedian);
+  stage.configure(core::IniConfig::fromText("[S]\nobject_depth = cluster_mean\n"), "S");
+  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::ClusterMean);
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_depth = mean\n"), "S"),
                core::ConfigError);
   try {
@@ -68,27 +74,32 @@ TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) 
         << bad;
 }
 
-// A setting that acts only through another is refused alone, naming both keys.
+// A setting that acts only through another is refused alone, naming both keys; with the other
+// it is taken. joint_occluders is on by default, so the method's far cluster turns it off.
 TEST(SegmentationStage, SettingsThatActOnlyThroughAnotherAreRefusedAlone) {
-  const std::pair<const char*, const char*> cases[] = {
-      {"retry_taken_surface = true", "object_cluster = occluder_aware"},
-      {"joint_occluders = true", "object_cluster = occluder_aware"},
-      {"expected_depth_band = 0.1", "boxes = tracked_detections"},
-      {"max_track_misses = 3", "boxes = predicted_tracks"}};
-  for (const auto& [setting, needed] : cases) {
+  struct Case {
+    const char *setting, *without, *needed;
+  };
+  const Case cases[] = {
+      {"retry_taken_surface = true", "object_cluster = far\njoint_occluders = false",
+       "object_cluster = occluder_aware"},
+      {"joint_occluders = true", "object_cluster = far", "object_cluster = occluder_aware"},
+      {"expected_depth_band = 0.1", "boxes = detections", "boxes = tracked_detections"},
+      {"max_track_misses = 3", "boxes = detections", "boxes = predicted_tracks"}};
+  for (const auto& c : cases) {
     segmentation::SegmentationStage stage;
+    const std::string setting = c.setting;
     try {
-      stage.configure(core::IniConfig::fromText(std::string("[S]\n") + setting, "s.ini"), "S");
-      FAIL() << setting << " accepted alone";
+      stage.configure(
+          core::IniConfig::fromText("[S]\n" + setting + "\n" + c.without + "\n", "s.ini"), "S");
+      FAIL() << setting << " accepted with " << c.without;
     } catch (const core::ConfigError& e) {
       const std::string what = e.what();
-      const std::string key = std::string(setting).substr(0, std::string(setting).find(' '));
-      EXPECT_NE(what.find(key), std::string::npos) << what;
-      EXPECT_NE(what.find(needed), std::string::npos) << what;
+      EXPECT_NE(what.find(setting.substr(0, setting.find(' '))), std::string::npos) << what;
+      EXPECT_NE(what.find(c.needed), std::string::npos) << what;
       EXPECT_NE(what.find("s.ini"), std::string::npos) << what;
     }
-    stage.configure(
-        core::IniConfig::fromText(std::string("[S]\n") + setting + "\n" + needed + "\n"), "S");
+    stage.configure(core::IniConfig::fromText("[S]\n" + setting + "\n" + c.needed + "\n"), "S");
   }
 }
 

@@ -4,7 +4,10 @@
 // samples in the box's central half, the background depth d_b from the upper half of the box,
 // thresholds T_min / T_max between them, and the mask = pixels of the box with depth in
 // [T_min, T_max]. Overlapping boxes are segmented each with their own thresholds; a pixel
-// both claim goes to the nearer object (mutual occlusion). MRPT-free; the stage wraps it.
+// both claim goes to one of them (mutual occlusion; the method: the nearer). Which cluster is
+// the object, which object takes a shared pixel and what d_t reports have variants besides the
+// method's (the enums below); the defaults are the shipped ones, methodParams() the method's.
+// MRPT-free; the stage wraps it.
 #include <dynslam/core/Perception.h>
 #include <dynslam/segmentation/TwoMeans.h>
 
@@ -56,22 +59,28 @@ enum class ObjectDepth {
   MaskMedian
 };
 
-/// The segmenter's settings. Keys, ranges, meanings: SegmentationOptions::describe() in
-/// SegmentationStage.cpp; docs/parameters.md.
+/// The segmenter's settings; the defaults are the shipped, best-measured ones (those of
+/// params/sim_vio.ini's [Segmentation]), methodParams() the method as method.md states it.
+/// Keys, ranges, meanings: SegmentationOptions::describe() in SegmentationStage.cpp;
+/// docs/parameters.md.
 struct DepthThresholdParams {
   int m = 64;
   int n = 64;
   double e_person = 0.5;  ///< m
   double e_car = 3.0;     ///< m
   double min_valid_fraction = 0.25;
-  double max_height_person = 0;  ///< m; 0 = off
+  double max_height_person = 2.2;  ///< m; 0 = off
   double expected_depth_band = 0;
   bool retry_taken_surface = false;
-  bool joint_occluders = false;
-  ObjectCluster object_cluster = ObjectCluster::Far;
-  OverlapRule overlap_rule = OverlapRule::Nearer;
-  ObjectDepth object_depth = ObjectDepth::ClusterMean;
+  bool joint_occluders = true;
+  ObjectCluster object_cluster = ObjectCluster::OccluderAware;
+  OverlapRule overlap_rule = OverlapRule::Connected;
+  ObjectDepth object_depth = ObjectDepth::MaskMedian;
 };
+
+/// method.md section 1 as written: the far cluster is the object, the nearer object takes a
+/// shared pixel, d_t is the cluster's mean, no size bound and no joint occluders.
+DepthThresholdParams methodParams();
 
 struct BoxClusters;    // src/ClusterChoice.h
 struct ClusterChoice;  // src/ClusterChoice.h
