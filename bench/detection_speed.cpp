@@ -2,7 +2,8 @@
 // HOG for comparison) and the rate the real-time detector thread sustains while the rest of the
 // pipeline keeps a core busy. Frames: vtest.avi (opencv-doc) resized to 640x480, the system's
 // image size, sampled evenly. YOLOX runs as configured by default (trim_padding: a 416 x 320
-// network input for these 4:3 frames); the "square" rows letterbox into 416 x 416 as before.
+// network input for these 4:3 frames); the "square" rows letterbox into 416 x 416, as a model
+// with a fixed square input needs.
 //
 //   build/bin/bench-detection [--frames 50] [--model ../shared/models/yolox_nano.onnx]
 //                             [--video /usr/share/doc/opencv-doc/examples/data/vtest.avi]

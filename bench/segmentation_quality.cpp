@@ -271,6 +271,110 @@ class PerceptionStages {
   std::vector<double> trackDepth_;
 };
 
+/// The detections a frame gives: the people and cars at least `minVisible` visible (hidden that
+/// much, no detector reports them; wholly hidden: never), with the truth of each.
+struct FrameDetections {
+  std::vector<core::Detection> detections;
+  std::vector<const sim::ObjectTruth*> truths;
+};
+
+FrameDetections detectionsOf(const sim::SimFrame& f, double minVisible, bool visibleBoxes) {
+  FrameDetections out;
+  for (const auto& o : f.objects) {
+    if (o.visible_pixels == 0 || o.visible_fraction < minVisible) continue;
+    core::Detection d;
+    // amodal: the simulator's box (the whole body, hidden parts too); visible: the box
+    // round the visible pixels, as a detector that sees only those might draw it.
+    d.box = visibleBoxes ? cv::boundingRect(f.image.label == o.id) : o.box;
+    d.category = o.category;
+    d.model = o.category == "car" ? core::MotionModel::Rigid : core::MotionModel::NonRigid;
+    d.truth_id = o.id;
+    out.detections.push_back(d);
+    out.truths.push_back(&o);
+  }
+  return out;
+}
+
+/// Scores the masks of people (the targets) and cars (printed apart) against the
+/// simulator's truth, frame by frame.
+class MaskScorer {
+ public:
+  Scores people, cars;  // the frame figures (ms, objects) go to people
+
+  MaskScorer(const segmentation::DepthThresholdSegmenter& segmenter, double fy,
+             FailureDumper& dumper, std::ostream* cases)
+      : segmenter_(segmenter), fy_(fy), dumper_(dumper), cases_(cases) {}
+
+  /// Frame `index`'s masks, one per detection of `d`; `trackDepth`: the depth of the track
+  /// that took each detection (--pipeline; else none).
+  void scoreFrame(size_t index, const sim::SimFrame& f, const FrameDetections& d,
+                  const std::vector<core::ObjectMask>& masks,
+                  const std::vector<double>* trackDepth) {
+    const Eigen::Isometry3d T_camera_world = f.T_world_camera.inverse();
+    for (size_t k = 0; k < masks.size(); ++k) {
+      const auto& o = *d.truths[k];
+      if (o.category != "person" && o.category != "car") continue;
+      score(index, f, d.detections, k, o, masks[k], T_camera_world,
+            trackDepth ? (*trackDepth)[k] : 0.0);
+    }
+  }
+
+ private:
+  void score(size_t index, const sim::SimFrame& f, const std::vector<core::Detection>& detections,
+             size_t k, const sim::ObjectTruth& o, const core::ObjectMask& m,
+             const Eigen::Isometry3d& T_camera_world, double trackDepth) {
+    const bool person = o.category != "car";
+    Scores& sc = person ? people : cars;
+    ++sc.seen;
+    // The person's true depth; none when all its visible pixels lie beyond the sensor's range
+    // (no mask can hold them: such people are counted apart and not scored).
+    const double z = segmentation::visibleMedianDepth(f.image.depth, f.image.label, o.id);
+    if (z <= 0) {
+      ++sc.outOfRange;
+      return;
+    }
+    if (!m.valid) ++sc.invalid;
+    const Occlusion c = o.visible_fraction >= 0.9   ? None
+                        : o.visible_fraction >= 0.5 ? Mild
+                                                    : Severe;
+    const double iou = c != Severe ? scoreMask(f, detections[k], k, o, m, sc) : -1;
+    if (!m.valid) return;
+    const double torsoZ = (T_camera_world * o.T_world_object).translation().z();
+    const double err = 100 * std::abs(m.d_t - z) / z;
+    if (iou >= 0 && err <= 5) sc.iouRightDepth.push_back(iou);
+    sc.depthErr[c].push_back(err);
+    const double e = segmenter_.marginFor(detections[k]);
+    sc.behind[c] += m.d_t > z + e;
+    sc.inFront[c] += m.d_t < z - e;
+    sc.torsoErr[c].push_back(100 * std::abs(m.d_t - torsoZ) / torsoZ);
+    if (person) dumper_.consider(f, o, m, iou, err);
+    if (cases_ && person)
+      writeCase(*cases_, dumper_.prefix(), index, o, z, m, err, f, detections, trackDepth);
+  }
+
+  /// The mask's IoU, precision and recall, the IoU of its box alone, and where its pixels went.
+  double scoreMask(const sim::SimFrame& f, const core::Detection& detection, size_t k,
+                   const sim::ObjectTruth& o, const core::ObjectMask& m, Scores& sc) const {
+    const cv::Mat truth = f.image.label == o.id;
+    const double iou = segmentation::maskIoU(m, truth);
+    sc.iou.push_back(iou);
+    const int area = m.valid ? cv::countNonZero(m.mask) : 0;
+    const int hit = m.valid ? cv::countNonZero(m.mask & truth(m.roi)) : 0;
+    sc.precision.push_back(area ? double(hit) / area : 0);
+    sc.recall.push_back(double(hit) / o.visible_pixels);
+    sc.boxIoU.push_back(double(o.visible_pixels) / std::max(1, m.roi.area()));
+    sc.iouAlone.push_back(
+        segmentation::maskIoU(segmenter_.segmentOne(f.image.depth, detection, k, 0, fy_), truth));
+    tallyPixels(f.image.label, f.image.depth, uint16_t(o.id), m, sc);
+    return iou;
+  }
+
+  const segmentation::DepthThresholdSegmenter& segmenter_;
+  double fy_;
+  FailureDumper& dumper_;
+  std::ostream* cases_;
+};
+
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,
                const segmentation::DepthThresholdSegmenter& segmenter, size_t every,
                bool visibleBoxes, double minVisible, FailureDumper& dumper,
@@ -279,7 +383,8 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   options.load(core::IniConfig::fromFile(ini, overrides));
   const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
   dumper.setPrefix(std::filesystem::path(ini).stem().string());
-  Scores s, cars;  // people (the targets), cars (printed apart)
+  MaskScorer scorer(segmenter, sequence->camera().fy, dumper, cases);
+  Scores& s = scorer.people;
   sim::SimFrame f;
   std::optional<PerceptionStages> stages;
   if (pipeline) stages.emplace(*pipeline);
@@ -287,85 +392,53 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   const size_t step = stages ? 1 : every;
   for (size_t i = 0; i < sequence->frameCount(); i += step) {
     sequence->renderFrame(i, f);
-    std::vector<core::Detection> detections;
-    std::vector<const sim::ObjectTruth*> truths;
-    for (const auto& o : f.objects) {
-      // Hidden that much, no detector reports it (wholly hidden: never).
-      if (o.visible_pixels == 0 || o.visible_fraction < minVisible) continue;
-      core::Detection d;
-      // amodal: the simulator's box (the whole body, hidden parts too); visible: the box
-      // round the visible pixels, as a detector that sees only those might draw it.
-      d.box = visibleBoxes ? cv::boundingRect(f.image.label == o.id) : o.box;
-      d.category = o.category;
-      d.model = o.category == "car" ? core::MotionModel::Rigid : core::MotionModel::NonRigid;
-      d.truth_id = o.id;
-      detections.push_back(d);
-      truths.push_back(&o);
-    }
+    const FrameDetections d = detectionsOf(f, minVisible, visibleBoxes);
     const auto t0 = std::chrono::steady_clock::now();
     const auto masks =
-        stages ? stages->masks(f, detections, sequence->camera())
-               : segmenter.segment(f.image.depth, detections, {}, sequence->camera().fy);
+        stages ? stages->masks(f, d.detections, sequence->camera())
+               : segmenter.segment(f.image.depth, d.detections, {}, sequence->camera().fy);
     if (i % every != 0) continue;
     s.ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    s.objects.push_back(detections.size());
-
-    const Eigen::Isometry3d T_camera_world = f.T_world_camera.inverse();
-    for (size_t k = 0; k < masks.size(); ++k) {
-      const auto& o = *truths[k];
-      if (o.category != "person" && o.category != "car") continue;
-      Scores& sc = o.category == "car" ? cars : s;  // frame figures (ms, objects) stay in s
-      ++sc.seen;
-      const auto& m = masks[k];
-      // The person's true depth; none when all its visible pixels lie beyond the sensor's range
-      // (no mask can hold them: such people are counted apart and not scored).
-      const double z = segmentation::visibleMedianDepth(f.image.depth, f.image.label, o.id);
-      if (z <= 0) {
-        ++sc.outOfRange;
-        continue;
-      }
-      if (!m.valid) ++sc.invalid;
-      const cv::Mat truth = f.image.label == o.id;
-      const Occlusion c = o.visible_fraction >= 0.9   ? None
-                          : o.visible_fraction >= 0.5 ? Mild
-                                                      : Severe;
-      double iou = -1;
-      if (c != Severe) {
-        iou = segmentation::maskIoU(m, truth);
-        sc.iou.push_back(iou);
-        const int area = m.valid ? cv::countNonZero(m.mask) : 0;
-        const int hit = m.valid ? cv::countNonZero(m.mask & truth(m.roi)) : 0;
-        sc.precision.push_back(area ? double(hit) / area : 0);
-        sc.recall.push_back(double(hit) / o.visible_pixels);
-        sc.boxIoU.push_back(double(o.visible_pixels) / std::max(1, m.roi.area()));
-        sc.iouAlone.push_back(segmentation::maskIoU(
-            segmenter.segmentOne(f.image.depth, detections[k], k, 0, sequence->camera().fy),
-            truth));
-        tallyPixels(f.image.label, f.image.depth, uint16_t(o.id), m, sc);
-      }
-      if (!m.valid) continue;
-      const double torsoZ = (T_camera_world * o.T_world_object).translation().z();
-      const double err = 100 * std::abs(m.d_t - z) / z;
-      if (iou >= 0 && err <= 5) sc.iouRightDepth.push_back(iou);
-      sc.depthErr[c].push_back(err);
-      const double e = segmenter.marginFor(detections[k]);
-      sc.behind[c] += m.d_t > z + e;
-      sc.inFront[c] += m.d_t < z - e;
-      sc.torsoErr[c].push_back(100 * std::abs(m.d_t - torsoZ) / torsoZ);
-      if (&sc == &s) dumper.consider(f, o, m, iou, err);
-      if (cases && &sc == &s)
-        writeCase(*cases, dumper.prefix(), i, o, z, m, err, f, detections,
-                  stages ? stages->trackDepth()[k] : 0.0);
-    }
+    s.objects.push_back(d.detections.size());
+    scorer.scoreFrame(i, f, d, masks, stages ? &stages->trackDepth() : nullptr);
   }
   std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes of objects >= %.2f visible%s\n",
               ini.c_str(), sequence->camera().width, sequence->camera().height, s.ms.size(),
               sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
               stages ? ("; masks after " + stages->names() + " (--pipeline)").c_str() : "");
   printTable(s, stages.has_value());
-  if (cars.seen > 0) printCars(cars);
+  if (scorer.cars.seen > 0) printCars(scorer.cars);
   std::printf("\n");
+}
+
+/// The segmenter's settings as a pipeline reads [Segmentation], from --pipeline INI or
+/// --seg-config INI (a system's [Segmentation] alone: each frame is still segmented alone, and
+/// a bench of a system's masks needs no copy of its keys), else the method as method.md states
+/// it (methodParams(); the stage's defaults are the shipped configuration); --seg-set then
+/// overrides in any section. `pipeline`: the --pipeline ini.
+struct SegmentationSetup {
+  segmentation::DepthThresholdParams params;
+  std::optional<core::IniConfig> pipeline;
+};
+
+SegmentationSetup segmentationSetup(const core::CommandLine& cl) {
+  const std::string pipelineIni = cl.valueOr("--pipeline", "");
+  const std::string segConfig = cl.valueOr("--seg-config", "");
+  if (!pipelineIni.empty() && !segConfig.empty())
+    throw core::UsageError(
+        "--pipeline and --seg-config: give one (--pipeline reads [Segmentation] too)");
+  const std::string iniFile = pipelineIni.empty() ? segConfig : pipelineIni;
+  auto segIni = iniFile.empty() ? core::IniConfig::fromText("", "--seg-set")
+                                : core::IniConfig::fromFile(iniFile, cl.all("--seg-set"));
+  if (iniFile.empty())
+    for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
+  segmentation::SegmentationOptions options;
+  if (iniFile.empty()) options.params = segmentation::methodParams();
+  core::loadOptionsStrict(options, segIni, "Segmentation");
+  SegmentationSetup setup{options.params, std::nullopt};
+  if (!pipelineIni.empty()) setup.pipeline = segIni;
+  return setup;
 }
 
 }  // namespace
@@ -386,25 +459,8 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> inis = cl.all("--config");
     if (inis.empty()) inis = {"params/sim/indoor_people_high.ini"};
-    // The segmenter's parameters as the pipeline reads them ([Segmentation]; defaults: the
-    // method's, or those of the --pipeline ini, which --seg-set then overrides in any section).
-    // --seg-config INI reads [Segmentation] alone from a system ini (each frame still segmented
-    // alone), so a bench of a system's masks needs no copy of its keys.
-    const std::string pipelineIni = cl.valueOr("--pipeline", "");
-    const std::string segConfig = cl.valueOr("--seg-config", "");
-    if (!pipelineIni.empty() && !segConfig.empty())
-      throw core::UsageError(
-          "--pipeline and --seg-config: give one (--pipeline reads [Segmentation] too)");
-    const std::string iniFile = pipelineIni.empty() ? segConfig : pipelineIni;
-    auto segIni = iniFile.empty() ? core::IniConfig::fromText("", "--seg-set")
-                                  : core::IniConfig::fromFile(iniFile, cl.all("--seg-set"));
-    if (iniFile.empty())
-      for (const auto& a : cl.all("--seg-set")) segIni.applyOverride(a);
-    std::optional<core::IniConfig> pipeline;
-    if (!pipelineIni.empty()) pipeline = segIni;
-    segmentation::SegmentationStage stage;
-    stage.configure(segIni, "Segmentation");
-    const segmentation::DepthThresholdSegmenter segmenter(stage.options().params);
+    const SegmentationSetup setup = segmentationSetup(cl);
+    const segmentation::DepthThresholdSegmenter segmenter(setup.params);
     const auto every =
         static_cast<size_t>(std::max(1LL, cl.optionalInteger("--every").value_or(3)));
     const std::string boxes = cl.valueOr("--boxes", "amodal");
@@ -424,7 +480,7 @@ int main(int argc, char** argv) {
     }
     for (const auto& ini : inis)
       benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper,
-                pipeline, cases.is_open() ? &cases : nullptr);
+                setup.pipeline, cases.is_open() ? &cases : nullptr);
     dumper.write();
     return 0;
   });

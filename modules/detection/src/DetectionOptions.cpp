@@ -1,103 +1,67 @@
 #include "dynslam/detection/DetectionOptions.h"
 
-#include <dynslam/core/Config.h>
-
-#include <mrpt/config/CConfigFileBase.h>
-
 namespace dynslam::detection {
 namespace {
 
-std::string layoutName(YoloLayout layout) {
-  switch (layout) {
-    case YoloLayout::YoloX:
-      return "yolox";
-    case YoloLayout::YoloV5:
-      return "yolov5";
-    case YoloLayout::YoloV8:
-      return "yolov8";
-  }
-  return "";
+using core::Range;
+
+constexpr core::Keyword<YoloLayout> kLayouts[] = {
+    {"yolox", YoloLayout::YoloX}, {"yolov5", YoloLayout::YoloV5}, {"yolov8", YoloLayout::YoloV8}};
+
+void describeOnnxYolo(core::OptionVisitor& v, OnnxYoloDetectorSettings& o) {
+  v.key("model", o.model, "ONNX file (relative: working directory)");
+  v.key("layout", o.layout, kLayouts,
+        "output layout: yolox (BGR 0-255) | yolov5 | yolov8 (RGB 0-1)");
+  v.key("input_size", o.input_size, Range::atLeast(32),
+        "network input, px (multiple of 32), the image's longer side");
+  v.key("trim_padding", o.trim_padding,
+        "drop the letterbox's grey rows (416x320, not 416x416, for 4:3); false for a model with a "
+        "fixed square input");
+  v.key("confidence", o.confidence, Range{0, 1, true, true}, "minimum score (objectness x class)");
+  v.key("nms_iou", o.nms_iou, Range{0, 1, true, false}, "NMS IoU threshold within a category");
+  v.key("threads", o.threads, Range::atLeast(0), "cv::setNumThreads (process-wide); 0: default");
+}
+
+void describeHog(core::OptionVisitor& v, HogPeopleDetectorSettings& o) {
+  v.key("scale", o.scale, Range::above(1), "pyramid step");
+  v.key("hit_threshold", o.hit_threshold, Range::any(), "minimum SVM margin");
+  v.key("win_stride", o.win_stride, Range::atLeast(8), "px between windows (multiple of 8)");
+  v.key("min_height", o.min_height, Range::atLeast(16),
+        "smallest person, px (image resized by 128 / min_height)");
+  v.key("nms_iou", o.nms_iou, Range::closed(0, 1), "NMS IoU threshold");
+}
+
+void describeGroundTruth(core::OptionVisitor& v, GroundTruthDetectorSettings& o) {
+  v.key("objects", o.objects, "dynslam-sim objects.txt (relative: working dir)");
+  v.key("miss_rate", o.miss_rate, Range::closed(0, 1), "probability a visible object is missed");
+  v.key("jitter_px", o.jitter_px, Range::atLeast(0), "Gaussian sigma per box edge, px");
+  v.key("false_positive_rate", o.false_positive_rate, Range::atLeast(0),
+        "mean random boxes per frame (Poisson)");
+  v.key("min_visible_fraction", o.min_visible_fraction, Range::closed(0, 1),
+        "less visible objects are not reported");
+  v.key("seed", o.seed, Range::atLeast(0), "noise seed (same seed: same boxes)");
 }
 
 }  // namespace
 
+const std::vector<std::string> DetectionOptions::kDetectors = {"onnx_yolo", "hog", "ground_truth"};
+
 DetectionOptions::DetectionOptions() : class_map(ClassMap().toString()) {}
 
-void DetectionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                          const std::string& s) {
-  MRPT_LOAD_CONFIG_VAR(detector, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(mode, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(class_map, string, c, s);
-  if (detector == "onnx_yolo") {
-    auto& o = onnx_yolo;
-    o.model = c.read_string(s, "model", o.model);
-    // std::invalid_argument for an unknown name; DetectionStage adds the section and source.
-    o.layout = parseYoloLayout(c.read_string(s, "layout", layoutName(o.layout)));
-    o.input_size = c.read_int(s, "input_size", o.input_size);
-    o.trim_padding = core::readBool(c, s, "trim_padding", o.trim_padding);
-    o.confidence = c.read_double(s, "confidence", o.confidence);
-    o.nms_iou = c.read_double(s, "nms_iou", o.nms_iou);
-    o.threads = c.read_int(s, "threads", o.threads);
-  } else if (detector == "hog") {
-    auto& o = hog;
-    o.scale = c.read_double(s, "scale", o.scale);
-    o.hit_threshold = c.read_double(s, "hit_threshold", o.hit_threshold);
-    o.win_stride = c.read_int(s, "win_stride", o.win_stride);
-    o.min_height = c.read_int(s, "min_height", o.min_height);
-    o.nms_iou = c.read_double(s, "nms_iou", o.nms_iou);
-  } else if (detector == "ground_truth") {
-    auto& o = ground_truth;
-    o.objects = c.read_string(s, "objects", o.objects);
-    o.miss_rate = c.read_double(s, "miss_rate", o.miss_rate);
-    o.jitter_px = c.read_double(s, "jitter_px", o.jitter_px);
-    o.false_positive_rate = c.read_double(s, "false_positive_rate", o.false_positive_rate);
-    o.min_visible_fraction = c.read_double(s, "min_visible_fraction", o.min_visible_fraction);
-    const int seed = c.read_int(s, "seed", static_cast<int>(o.seed));
-    o.seed = static_cast<std::uint32_t>(seed);
-  }
-}
-
-void DetectionOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                        const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(detector, "onnx_yolo | hog | ground_truth (its keys follow)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(mode,
-                               "deterministic: detect every frame inline | realtime: detector "
-                               "thread at its own rate, frames it skips get no detections");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(class_map,
-                               "coco_class:person|car|other:rigid|non_rigid ...; unmapped "
-                               "classes are dropped");
-  if (detector == "onnx_yolo") {
-    const auto& o = onnx_yolo;
-    core::writeKey(c, s, "model", o.model, "ONNX file (relative: working directory)");
-    core::writeKey(c, s, "layout", layoutName(o.layout),
-        "output layout: yolox (BGR 0-255) | yolov5 | yolov8 (RGB 0-1)");
-    core::writeKey(c, s, "input_size", o.input_size,
-                   "network input, px (multiple of 32), the image's longer side");
-    core::writeKey(c, s, "trim_padding", o.trim_padding,
-                   "drop the letterbox's grey rows (416x320, not 416x416, for 4:3); false for a "
-                   "model with a fixed square input");
-    core::writeKey(c, s, "confidence", o.confidence, "minimum score (objectness x class)");
-    core::writeKey(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold within a category");
-    core::writeKey(c, s, "threads", o.threads, "cv::setNumThreads (process-wide); 0: default");
-  } else if (detector == "hog") {
-    const auto& o = hog;
-    core::writeKey(c, s, "scale", o.scale, "pyramid step (> 1)");
-    core::writeKey(c, s, "hit_threshold", o.hit_threshold, "minimum SVM margin");
-    core::writeKey(c, s, "win_stride", o.win_stride, "px between windows (multiple of 8)");
-    core::writeKey(c, s, "min_height", o.min_height,
-        "smallest person, px (image resized by 128 / min_height)");
-    core::writeKey(c, s, "nms_iou", o.nms_iou, "NMS IoU threshold");
-  } else if (detector == "ground_truth") {
-    const auto& o = ground_truth;
-    core::writeKey(c, s, "objects", o.objects, "dynslam-sim objects.txt (relative: working dir)");
-    core::writeKey(c, s, "miss_rate", o.miss_rate, "probability a visible object is missed");
-    core::writeKey(c, s, "jitter_px", o.jitter_px, "Gaussian sigma per box edge, px");
-    core::writeKey(c, s, "false_positive_rate", o.false_positive_rate,
-        "mean random boxes per frame (Poisson)");
-    core::writeKey(c, s, "min_visible_fraction", o.min_visible_fraction,
-        "less visible objects are not reported");
-    core::writeKey(c, s, "seed", static_cast<int>(o.seed), "noise seed (same seed: same boxes)");
-  }
+void DetectionOptions::describe(core::OptionVisitor& v) {
+  // The parameter reference lists each detector's keys apart by the "(its keys follow)" mark.
+  v.word("detector", detector, kDetectors, "onnx_yolo | hog | ground_truth (its keys follow)");
+  v.word("mode", mode, {"deterministic", "realtime"},
+         "deterministic: detect every frame inline | realtime: detector thread at its own rate, "
+         "frames it skips get no detections");
+  v.key("class_map", class_map,
+        "coco_class:person|car|other:rigid|non_rigid ...; unmapped classes are dropped");
+  if (detector == "onnx_yolo")
+    describeOnnxYolo(v, onnx_yolo);
+  else if (detector == "hog")
+    describeHog(v, hog);
+  else if (detector == "ground_truth")
+    describeGroundTruth(v, ground_truth);
 }
 
 }  // namespace dynslam::detection

@@ -4,27 +4,22 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <stdexcept>
+
 namespace dynslam::detection {
 
 DetectionStage::DetectionStage() = default;
 DetectionStage::~DetectionStage() = default;
 
 void DetectionStage::configure(const core::IniConfig& cfg, const std::string& section) {
-  const auto where = "[" + section + "] of " + cfg.source();
   // The detector decides which keys the section may hold, so it is read before the strict load.
-  options_.detector = cfg.ini().read_string(section, "detector", options_.detector);
-  if (options_.detector != "onnx_yolo" && options_.detector != "hog" &&
-      options_.detector != "ground_truth")
-    throw core::ConfigError("detector = '" + options_.detector + "' in " + where +
-                            ": expected onnx_yolo, hog or ground_truth");
   try {
-    core::loadOptionsStrict(options_, cfg, section);
+    options_.detector = core::readOneOf(cfg.ini(), section, "detector", options_.detector,
+                                        DetectionOptions::kDetectors);
   } catch (const std::invalid_argument& e) {
-    throw core::ConfigError(std::string(e.what()) + " in " + where);
+    throw core::ConfigError(std::string(e.what()) + " in [" + section + "] of " + cfg.source());
   }
-  if (options_.mode != "deterministic" && options_.mode != "realtime")
-    throw core::ConfigError("mode = '" + options_.mode + "' in " + where +
-                            ": expected deterministic or realtime");
+  core::loadOptionsStrict(options_, cfg, section);
   auto detector = makeDetector(cfg, section);
   if (options_.mode == "realtime")
     realtime_ = std::make_unique<RealtimeDetector>(std::move(detector));

@@ -61,7 +61,8 @@ std::vector<core::Detection> GroundTruthDetector::detect(const core::Frame& fram
                         " (t = " + std::to_string(frame.t) + ") is outside the time span of '" +
                         settings_.objects + "': is it the ground truth of another sequence?");
   const cv::Size image = imageSize(frame);
-  std::seed_seq seq{settings_.seed, static_cast<std::uint32_t>(frame.index)};
+  std::seed_seq seq{static_cast<std::uint32_t>(settings_.seed),
+                    static_cast<std::uint32_t>(frame.index)};
   std::mt19937 rng(seq);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
 

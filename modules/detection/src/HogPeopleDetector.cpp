@@ -9,14 +9,9 @@ namespace dynslam::detection {
 
 HogPeopleDetector::HogPeopleDetector(HogPeopleDetectorSettings settings, ClassMap class_map)
     : settings_(settings), class_map_(std::move(class_map)) {
-  if (!(settings_.scale > 1.0))
-    throw DetectorError("HOG scale = " + std::to_string(settings_.scale) + ": must be > 1");
   if (settings_.win_stride <= 0 || settings_.win_stride % 8 != 0)
     throw DetectorError("HOG win_stride = " + std::to_string(settings_.win_stride) +
                         ": must be a positive multiple of 8 (the cell size)");
-  if (settings_.min_height < 16)
-    throw DetectorError("HOG min_height = " + std::to_string(settings_.min_height) +
-                        ": must be at least 16 pixels");
   hog_.setSVMDetector(cv::HOGDescriptor::getDefaultPeopleDetector());
 }
 

@@ -7,15 +7,57 @@
 
 namespace dynslam::detection {
 
+namespace {
+
+// Maps classes first (dropping the unmapped), then NMS within each category: a "bus" and a
+// "car" box on one vehicle mapped to car are one car. Boxes go back to the image's pixels.
+std::vector<core::Detection> mappedAndSuppressed(const std::vector<YoloCandidate>& candidates,
+                                                 const Letterbox& letterbox, cv::Size image,
+                                                 const ClassMap& class_map,
+                                                 const OnnxYoloDetectorSettings& s) {
+  struct Kept {
+    cv::Rect2f box;
+    float score;
+    MappedClass mapped;
+  };
+  std::map<std::string, std::vector<Kept>> by_category;
+  const cv::Rect2f image_rect(0, 0, float(image.width), float(image.height));
+  for (const auto& c : candidates) {
+    auto mapped = class_map.lookup(c.class_id);
+    if (!mapped) continue;
+    const cv::Rect2f box = letterbox.toImage(c.box) & image_rect;
+    if (box.width < 1 || box.height < 1) continue;
+    by_category[mapped->category].push_back({box, c.score, std::move(*mapped)});
+  }
+  std::vector<core::Detection> detections;
+  for (const auto& [category, kept] : by_category) {
+    std::vector<cv::Rect2d> boxes;
+    std::vector<float> scores;
+    for (const auto& k : kept) boxes.emplace_back(k.box), scores.push_back(k.score);
+    std::vector<int> keep;
+    cv::dnn::NMSBoxes(boxes, scores, static_cast<float>(s.confidence),
+                      static_cast<float>(s.nms_iou), keep);
+    for (const int i : keep) {
+      const Kept& k = kept[static_cast<std::size_t>(i)];
+      core::Detection d;
+      d.box = k.box;
+      d.category = k.mapped.category;
+      d.model = k.mapped.model;
+      d.score = k.score;
+      detections.push_back(d);
+    }
+  }
+  return detections;
+}
+
+}  // namespace
+
 OnnxYoloDetector::OnnxYoloDetector(OnnxYoloDetectorSettings settings, ClassMap class_map)
     : settings_(std::move(settings)), class_map_(std::move(class_map)) {
   const auto& s = settings_;
   if (s.input_size < 32 || s.input_size % 32 != 0)
     throw DetectorError("YOLO input_size = " + std::to_string(s.input_size) +
                         ": must be a positive multiple of 32 (the coarsest stride)");
-  if (!(s.confidence > 0 && s.confidence < 1) || !(s.nms_iou > 0 && s.nms_iou <= 1))
-    throw DetectorError("YOLO confidence and nms_iou must lie in (0, 1)");
-  if (s.threads < 0) throw DetectorError("YOLO threads must be >= 0 (0: OpenCV's default)");
   // Checked first: OpenCV's own message for a missing file is an assertion deep in its parser.
   if (!std::ifstream(s.model, std::ios::binary))
     throw DetectorError("cannot read the YOLO model '" + s.model + "' (missing or unreadable)");
@@ -62,41 +104,7 @@ std::vector<core::Detection> OnnxYoloDetector::detectImage(const cv::Mat& bgr) {
     throw DetectorError("YOLO model '" + s.model + "': " + e.what() + " (is `layout` right?)");
   }
 
-  // Map classes first (dropping the unmapped), then NMS within each category: a "bus" and a
-  // "car" box on one vehicle mapped to car are one car.
-  struct Kept {
-    cv::Rect2f box;
-    float score;
-    MappedClass mapped;
-  };
-  std::map<std::string, std::vector<Kept>> by_category;
-  const cv::Rect2f image_rect(0, 0, float(bgr.cols), float(bgr.rows));
-  for (const auto& c : candidates) {
-    auto mapped = class_map_.lookup(c.class_id);
-    if (!mapped) continue;
-    const cv::Rect2f box = letterbox.toImage(c.box) & image_rect;
-    if (box.width < 1 || box.height < 1) continue;
-    by_category[mapped->category].push_back({box, c.score, std::move(*mapped)});
-  }
-  std::vector<core::Detection> detections;
-  for (const auto& [category, kept] : by_category) {
-    std::vector<cv::Rect2d> boxes;
-    std::vector<float> scores;
-    for (const auto& k : kept) boxes.emplace_back(k.box), scores.push_back(k.score);
-    std::vector<int> keep;
-    cv::dnn::NMSBoxes(boxes, scores, static_cast<float>(s.confidence),
-                      static_cast<float>(s.nms_iou), keep);
-    for (const int i : keep) {
-      const Kept& k = kept[static_cast<std::size_t>(i)];
-      core::Detection d;
-      d.box = k.box;
-      d.category = k.mapped.category;
-      d.model = k.mapped.model;
-      d.score = k.score;
-      detections.push_back(d);
-    }
-  }
-  return detections;
+  return mappedAndSuppressed(candidates, letterbox, bgr.size(), class_map_, s);
 }
 
 }  // namespace dynslam::detection

@@ -81,14 +81,6 @@ void decodeYoloV8(const cv::Mat& out, float min_score, std::vector<YoloCandidate
 
 }  // namespace
 
-YoloLayout parseYoloLayout(const std::string& name) {
-  if (name == "yolox") return YoloLayout::YoloX;
-  if (name == "yolov5") return YoloLayout::YoloV5;
-  if (name == "yolov8") return YoloLayout::YoloV8;
-  throw std::invalid_argument("unknown YOLO layout '" + name +
-                              "' (expected yolox, yolov5 or yolov8)");
-}
-
 cv::Mat Letterbox::apply(const cv::Mat& bgr, int input_size, bool trim) {
   scale = std::min(double(input_size) / bgr.cols, double(input_size) / bgr.rows);
   const cv::Size resized(std::max(1, int(std::lround(bgr.cols * scale))),

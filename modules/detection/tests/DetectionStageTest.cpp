@@ -77,6 +77,16 @@ TEST(DetectionStage, ConfigErrorsNameSectionKeyAndPath) {
   EXPECT_NE(model.find("[Detection] of test.ini"), std::string::npos) << model;
   EXPECT_NE(configError("[Detection]\ndetector = ground_truth\n").find("objects is empty"),
             std::string::npos);
+  // Values out of a key's range, each named with the file.
+  for (const char* bad :
+       {"detector = hog\nscale = 1", "detector = hog\nmin_height = 8", "confidence = 1",
+        "nms_iou = 0", "threads = -1", "input_size = 16", "detector = ground_truth\nmiss_rate = 2",
+        "detector = ground_truth\nseed = -1", "detector = ground_truth\njitter_px = -3"}) {
+    const auto error = configError(std::string("[Detection]\n") + bad + "\n");
+    const std::string key = std::string(bad).substr(std::string(bad).rfind('\n') + 1);
+    EXPECT_NE(error.find(key.substr(0, key.find(' '))), std::string::npos) << bad << ": " << error;
+    EXPECT_NE(error.find("test.ini"), std::string::npos) << bad << ": " << error;
+  }
 }
 
 TEST(DetectionStage, DeterministicModeDetectsEveryFrameInline) {
@@ -168,7 +178,7 @@ TEST(DetectionStage, EveryKeyWrittenIsReadBackForEachDetector) {
       EXPECT_DOUBLE_EQ(g.jitter_px, 3);
       EXPECT_DOUBLE_EQ(g.false_positive_rate, 0.2);
       EXPECT_DOUBLE_EQ(g.min_visible_fraction, 0.4);
-      EXPECT_EQ(g.seed, 7u);
+      EXPECT_EQ(g.seed, 7);
     }
   }
 }

@@ -38,8 +38,6 @@ TEST(HogPeopleDetector, ReportsNothingWhenPersonIsUnmappedAndRejectsBadSettings)
 
   det::HogPeopleDetectorSettings bad;
   bad.win_stride = 12;
-  EXPECT_THROW(det::HogPeopleDetector(bad, det::ClassMap()), det::DetectorError);
-  bad = {};
-  bad.scale = 1.0;
-  EXPECT_THROW(det::HogPeopleDetector(bad, det::ClassMap()), det::DetectorError);
+  EXPECT_THROW(det::HogPeopleDetector(bad, det::ClassMap()), det::DetectorError)
+      << "not a multiple of the 8-pixel cell";
 }

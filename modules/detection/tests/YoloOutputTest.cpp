@@ -24,13 +24,6 @@ void expectBox(const cv::Rect2f& box, float x, float y, float w, float h) {
 
 }  // namespace
 
-TEST(YoloOutput, ParsesLayoutNames) {
-  EXPECT_EQ(det::parseYoloLayout("yolox"), det::YoloLayout::YoloX);
-  EXPECT_EQ(det::parseYoloLayout("yolov5"), det::YoloLayout::YoloV5);
-  EXPECT_EQ(det::parseYoloLayout("yolov8"), det::YoloLayout::YoloV8);
-  EXPECT_THROW(det::parseYoloLayout("yolov7"), std::invalid_argument);
-}
-
 TEST(YoloOutput, LetterboxPutsTheImageTopLeftOnGreyAndMapsBoxesBack) {
   cv::Mat image(480, 640, CV_8UC3, cv::Scalar(10, 20, 30));
   det::Letterbox lb;

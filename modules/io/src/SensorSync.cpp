@@ -2,7 +2,6 @@
 
 #include "dynslam/io/ObservationConversion.h"
 
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationGPS.h>
 #include <mrpt/obs/CObservationIMU.h>
@@ -26,25 +25,12 @@ bool labelMatches(const std::string& wanted, const std::string& label) {
 
 }  // namespace
 
-void SensorSyncOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                           const std::string& s) {
-  MRPT_LOAD_CONFIG_VAR(camera_label, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(imu_label, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(gnss_label, string, c, s);
-  skip_frames_without_depth =
-      core::readBool(c, s, "skip_frames_without_depth", skip_frames_without_depth);
-  MRPT_LOAD_CONFIG_VAR(min_gnss_fix_quality, int, c, s);
-}
-
-void SensorSyncOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                         const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(camera_label, "sensorLabel of the RGB-D camera (empty: any)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(imu_label, "sensorLabel of the IMU (empty: any)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(gnss_label, "sensorLabel of the GNSS receiver (empty: any)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(skip_frames_without_depth,
-                               "true: drop RGB-D observations without depth; false: error");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_gnss_fix_quality,
-                               "GGA fixes of lower quality are dropped (1 GPS, 2 DGPS, 4 RTK)");
+void SensorSyncOptions::describe(core::OptionVisitor& v) {
+  v.key("camera_label", camera_label, "sensorLabel of the RGB-D camera (empty: any)");
+  v.key("imu_label", imu_label, "sensorLabel of the IMU (empty: any)");
+  v.key("gnss_label", gnss_label, "sensorLabel of the GNSS receiver (empty: any)");
+  v.key("skip_frames_without_depth", skip_frames_without_depth,
+        "true: drop RGB-D observations without depth; false: error");
 }
 
 SensorSync::SensorSync(SensorSyncOptions options) : options_(std::move(options)) {}
@@ -61,69 +47,77 @@ void SensorSync::checkOrder(const mrpt::obs::CObservation& obs, double t,
   last_t_[sensor] = t;
 }
 
+void SensorSync::checkNotLate(const char* what, double t) const {
+  if (last_frame_t_ && t <= *last_frame_t_)
+    throw SyncError(std::string("out-of-order timestamp: ") + what + " observation #" +
+                    std::to_string(counts_.observations - 1) + " at t=" + stamp(t) +
+                    " arrived after the frame at t=" + stamp(*last_frame_t_) +
+                    " was handed out (the rawlog is not sorted by time)");
+}
+
 void SensorSync::push(const mrpt::obs::CObservation::Ptr& obs, std::vector<core::Frame>& out) {
   using namespace mrpt::obs;
   ++counts_.observations;
   ++counts_.by_type[obs->GetRuntimeClass()->className];
   const double t = mrpt::Clock::toDouble(obs->timestamp);
-  const auto lateCheck = [&](const char* what) {
-    if (last_frame_t_ && t <= *last_frame_t_)
-      throw SyncError(std::string("out-of-order timestamp: ") + what + " observation #" +
-                      std::to_string(counts_.observations - 1) + " at t=" + stamp(t) +
-                      " arrived after the frame at t=" + stamp(*last_frame_t_) +
-                      " was handed out (the rawlog is not sorted by time)");
-  };
-
   if (auto scan = std::dynamic_pointer_cast<CObservation3DRangeScan>(obs);
       scan && labelMatches(options_.camera_label, obs->sensorLabel)) {
     checkOrder(*obs, t, true);
     emitUpTo(t, out);
-    ++counts_.rgbd;
-    core::Frame frame;
-    try {
-      fillFrameFromRgbd(*scan, frame);
-    } catch (const ConversionError&) {
-      if (!options_.skip_frames_without_depth || scan->hasRangeImage) throw;
-      ++counts_.frames_without_depth;
-      return;
-    }
-    waiting_.push_back(std::move(frame));
-    return;
-  }
-  if (auto imu = std::dynamic_pointer_cast<CObservationIMU>(obs);
-      imu && labelMatches(options_.imu_label, obs->sensorLabel)) {
+    takeRgbd(*scan);
+  } else if (auto imu = std::dynamic_pointer_cast<CObservationIMU>(obs);
+             imu && labelMatches(options_.imu_label, obs->sensorLabel)) {
     checkOrder(*obs, t, false);
     emitUpTo(t, out);
-    lateCheck("IMU");
-    ++counts_.imu;
-    if (auto s = imuSampleFrom(*imu)) {
-      imu_.push_back(*s);
-      T_body_imu_ = imuPoseOnBody(*imu);
-    }
-    return;
-  }
-  if (auto gps = std::dynamic_pointer_cast<CObservationGPS>(obs);
-      gps && labelMatches(options_.gnss_label, obs->sensorLabel)) {
+    checkNotLate("IMU", t);
+    takeImu(*imu);
+  } else if (auto gps = std::dynamic_pointer_cast<CObservationGPS>(obs);
+             gps && labelMatches(options_.gnss_label, obs->sensorLabel)) {
     checkOrder(*obs, t, false);
     emitUpTo(t, out);
-    lateCheck("GNSS");
-    ++counts_.gnss;
-    auto fix = gnssFixFrom(*gps);
-    if (!fix || fix->fix_quality < options_.min_gnss_fix_quality) {
-      ++counts_.gnss_dropped;
-      return;
-    }
-    if (!origin_) origin_ = Eigen::Vector3d(fix->latitude_deg, fix->longitude_deg, fix->altitude_m);
-    mrpt::math::TPoint3D enu;
-    mrpt::topography::geodeticToENU_WGS84(
-        mrpt::topography::TGeodeticCoords(fix->latitude_deg, fix->longitude_deg, fix->altitude_m),
-        enu, mrpt::topography::TGeodeticCoords((*origin_)[0], (*origin_)[1], (*origin_)[2]));
-    fix->enu = {enu.x, enu.y, enu.z};
-    gnss_.push_back(*fix);
+    checkNotLate("GNSS", t);
+    takeGnss(*gps);
+  } else {
+    ++counts_.other;
+    emitUpTo(t, out);
+  }
+}
+
+void SensorSync::takeRgbd(const mrpt::obs::CObservation3DRangeScan& scan) {
+  ++counts_.rgbd;
+  core::Frame frame;
+  try {
+    fillFrameFromRgbd(scan, frame);
+  } catch (const ConversionError&) {
+    if (!options_.skip_frames_without_depth || scan.hasRangeImage) throw;
+    ++counts_.frames_without_depth;
     return;
   }
-  ++counts_.other;
-  emitUpTo(t, out);
+  waiting_.push_back(std::move(frame));
+}
+
+void SensorSync::takeImu(const mrpt::obs::CObservationIMU& imu) {
+  ++counts_.imu;
+  if (auto s = imuSampleFrom(imu)) {
+    imu_.push_back(*s);
+    T_body_imu_ = imuPoseOnBody(imu);
+  }
+}
+
+void SensorSync::takeGnss(const mrpt::obs::CObservationGPS& gps) {
+  ++counts_.gnss;
+  auto fix = gnssFixFrom(gps);
+  if (!fix || fix->fix_quality < 1) {  // GGA quality 0: no fix
+    ++counts_.gnss_dropped;
+    return;
+  }
+  if (!origin_) origin_ = Eigen::Vector3d(fix->latitude_deg, fix->longitude_deg, fix->altitude_m);
+  mrpt::math::TPoint3D enu;
+  mrpt::topography::geodeticToENU_WGS84(
+      mrpt::topography::TGeodeticCoords(fix->latitude_deg, fix->longitude_deg, fix->altitude_m),
+      enu, mrpt::topography::TGeodeticCoords((*origin_)[0], (*origin_)[1], (*origin_)[2]));
+  fix->enu = {enu.x, enu.y, enu.z};
+  gnss_.push_back(*fix);
 }
 
 void SensorSync::emitUpTo(double t, std::vector<core::Frame>& out) {

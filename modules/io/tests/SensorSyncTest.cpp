@@ -193,3 +193,29 @@ TEST(SensorSync, ExtrinsicsComeFromTheObservationsSensorPose) {
   EXPECT_TRUE(rotated(f.T_body_imu, Eigen::Vector3d::UnitZ())
                   .isApprox(-Eigen::Vector3d::UnitZ(), 1e-12));
 }
+
+TEST(SensorSyncOptions, ReadsItsKeysAndNamesABadValue) {
+  SensorSyncOptions o;
+  dynslam::core::loadOptionsStrict(
+      o,
+      dynslam::core::IniConfig::fromText(
+          "[SensorSync]\ncamera_label = FRONT\nimu_label = IMU\ngnss_label = GPS\n"
+          "skip_frames_without_depth = true\n"),
+      "SensorSync");
+  EXPECT_EQ(o.camera_label, "FRONT");
+  EXPECT_EQ(o.imu_label, "IMU");
+  EXPECT_EQ(o.gnss_label, "GPS");
+  EXPECT_TRUE(o.skip_frames_without_depth);
+  for (const char* bad : {"skip_frames_without_depth = maybe", "camera = FRONT"}) {
+    try {
+      dynslam::core::loadOptionsStrict(
+          o, dynslam::core::IniConfig::fromText(std::string("[SensorSync]\n") + bad, "s.ini"),
+          "SensorSync");
+      FAIL() << bad << " accepted";
+    } catch (const dynslam::core::ConfigError& e) {
+      const std::string key = std::string(bad).substr(0, std::string(bad).find(' '));
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("s.ini"), std::string::npos) << e.what();
+    }
+  }
+}

@@ -1,7 +1,5 @@
 #include "dynslam/odometry/RgbdOdometryStage.h"
 
-#include <mrpt/config/CConfigFileBase.h>
-
 #include <opencv2/imgproc.hpp>
 #include <opencv2/rgbd.hpp>
 
@@ -42,32 +40,35 @@ double rotationDeg(const Eigen::Isometry3d& T) {
   return Eigen::AngleAxisd(T.rotation()).angle() * 180.0 / M_PI;
 }
 
-}  // namespace
-
-void RgbdOdometryOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                             const std::string& s) {
-  MRPT_LOAD_CONFIG_VAR(method, string, c, s);
-  MRPT_LOAD_CONFIG_VAR(min_depth, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_depth, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_depth_diff, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_points_part, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(keyframe_translation, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(keyframe_rotation_deg, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_translation, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(max_rotation_deg, double, c, s);
+// The frame's grey image; a black one for method icp, which works on depth alone.
+cv::Mat greyOf(const core::Frame& frame, const std::string& method) {
+  cv::Mat grey;
+  if (!frame.rgb.empty())
+    cv::cvtColor(frame.rgb, grey, cv::COLOR_BGR2GRAY);
+  else if (method != "icp")
+    throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
+                             " has no colour image; method = icp works on depth alone");
+  else
+    grey = cv::Mat(frame.depth.size(), CV_8UC1, cv::Scalar(0));
+  return grey;
 }
 
-void RgbdOdometryOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                           const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(method, "rgbd_icp | rgbd (photometric) | icp (geometric)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_depth, "m; nearer pixels are not used");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth, "m; farther pixels are not used");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth_diff, "m; correspondences differing more are rejected");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_points_part, "fraction of pixels sampled per iteration");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(keyframe_translation, "m from the keyframe that start a new one");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(keyframe_rotation_deg, "deg from the keyframe that start a new one");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_translation, "m; a larger estimated motion is a failure");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_rotation_deg, "deg; a larger estimated motion is a failure");
+}  // namespace
+
+void RgbdOdometryOptions::describe(core::OptionVisitor& v) {
+  using core::Range;
+  v.word("method", method, {"rgbd_icp", "rgbd", "icp"},
+         "rgbd_icp: photometric and geometric | rgbd: photometric | icp: geometric (depth alone)");
+  v.key("min_depth", min_depth, Range::atLeast(0), "m; nearer pixels are not used");
+  v.key("max_depth", max_depth, Range::above(0), "m; farther pixels are not used");
+  v.key("keyframe_translation", keyframe_translation, Range::atLeast(0),
+        "m from the keyframe that starts a new one");
+  v.key("keyframe_rotation_deg", keyframe_rotation_deg, Range::atLeast(0),
+        "deg from the keyframe that starts a new one");
+  v.key("max_translation", max_translation, Range::above(0),
+        "m; a larger estimated motion is a failure");
+  v.key("max_rotation_deg", max_rotation_deg, Range::above(0),
+        "deg; a larger estimated motion is a failure");
 }
 
 struct RgbdOdometryStage::Impl {
@@ -77,6 +78,30 @@ struct RgbdOdometryStage::Impl {
   Eigen::Isometry3d T_keyframe_last = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d T_world_last = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d last_motion = Eigen::Isometry3d::Identity();  // previous -> current
+
+  // A frame used as the source of compute() is not reusable as a destination (OpenCV keeps
+  // source-only data in its cache), so a keyframe always gets a frame object of its own.
+  cv::Ptr<cv::rgbd::OdometryFrame> makeKeyframe(const cv::Mat& grey, const cv::Mat& depth) const {
+    auto kf = cv::rgbd::OdometryFrame::create(grey, depth);
+    odometry->prepareFrameCache(kf, cv::rgbd::OdometryFrame::CACHE_DST);
+    return kf;
+  }
+
+  // The motion keyframe <- current, aligned from `predicted`; nullopt when the alignment failed,
+  // gave no rigid motion, or a step from the last frame larger than the options allow.
+  std::optional<Eigen::Isometry3d> measure(const cv::Mat& grey, const cv::Mat& depth,
+                                           const Eigen::Isometry3d& predicted,
+                                           const RgbdOdometryOptions& o) {
+    auto current = cv::rgbd::OdometryFrame::create(grey, depth);
+    cv::Mat Rt;
+    if (!odometry->compute(current, keyframe, Rt, toCv(predicted))) return std::nullopt;
+    const auto measured = rigidMotion(Rt);
+    if (!measured) return std::nullopt;
+    const Eigen::Isometry3d step = T_keyframe_last.inverse() * *measured;
+    if (step.translation().norm() > o.max_translation || rotationDeg(step) > o.max_rotation_deg)
+      return std::nullopt;
+    return measured;
+  }
 };
 
 RgbdOdometryStage::RgbdOdometryStage() : impl_(std::make_unique<Impl>()) {}
@@ -85,19 +110,16 @@ RgbdOdometryStage::~RgbdOdometryStage() = default;
 void RgbdOdometryStage::configure(const core::IniConfig& cfg, const std::string& section) {
   core::loadOptionsStrict(options_, cfg, section);
   const auto& o = options_;
-  const cv::Mat noK;  // the camera matrix is set from the first frame's intrinsics
+  // The camera matrix is set from the first frame's intrinsics; the rejection of
+  // correspondences more than 7 cm apart in depth and the share of pixels sampled (7 %) are
+  // OpenCV's defaults.
+  const cv::Mat noK;
   if (o.method == "rgbd_icp")
-    impl_->odometry = cv::rgbd::RgbdICPOdometry::create(noK, o.min_depth, o.max_depth,
-                                                        o.max_depth_diff, o.max_points_part);
+    impl_->odometry = cv::rgbd::RgbdICPOdometry::create(noK, o.min_depth, o.max_depth);
   else if (o.method == "rgbd")
-    impl_->odometry =
-        cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff);
-  else if (o.method == "icp")
-    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth, o.max_depth_diff,
-                                                    o.max_points_part);
-  else
-    throw core::ConfigError("[" + section + "] method = '" + o.method + "' in " + cfg.source() +
-                            ": expected rgbd_icp, rgbd or icp");
+    impl_->odometry = cv::rgbd::RgbdOdometry::create(noK, o.min_depth, o.max_depth);
+  else  // icp (describe() admits no other word)
+    impl_->odometry = cv::rgbd::ICPOdometry::create(noK, o.min_depth, o.max_depth);
 }
 
 void RgbdOdometryStage::process(core::Frame& frame) {
@@ -105,26 +127,11 @@ void RgbdOdometryStage::process(core::Frame& frame) {
   if (frame.depth.empty())
     throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
                              " has no depth");
-  cv::Mat grey;
-  if (!frame.rgb.empty())
-    cv::cvtColor(frame.rgb, grey, cv::COLOR_BGR2GRAY);
-  else if (options_.method != "icp")
-    throw std::runtime_error("RgbdOdometry: frame " + std::to_string(frame.index) +
-                             " has no colour image; method = icp works on depth alone");
-  else
-    grey = cv::Mat(frame.depth.size(), CV_8UC1, cv::Scalar(0));
-
-  // A frame used as the source of compute() is not reusable as a destination (OpenCV keeps
-  // source-only data in its cache), so a keyframe always gets a frame object of its own.
-  const auto makeKeyframe = [&] {
-    auto kf = cv::rgbd::OdometryFrame::create(grey, frame.depth);
-    s.odometry->prepareFrameCache(kf, cv::rgbd::OdometryFrame::CACHE_DST);
-    return kf;
-  };
-  if (!s.keyframe) {
+  const cv::Mat grey = greyOf(frame, options_.method);
+  if (!s.keyframe) {  // the first frame: the world's origin and the first keyframe
     const auto& k = frame.intrinsics;
     s.odometry->setCameraMatrix((cv::Mat_<double>(3, 3) << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1));
-    s.keyframe = makeKeyframe();
+    s.keyframe = s.makeKeyframe(grey, frame.depth);
     ++keyframes_;
     ++frames_;
     frame.T_world_camera = Eigen::Isometry3d::Identity();
@@ -133,18 +140,9 @@ void RgbdOdometryStage::process(core::Frame& frame) {
 
   // Predict with constant velocity; it is the initial guess and the fallback on failure.
   const Eigen::Isometry3d predicted = s.T_keyframe_last * s.last_motion;
-  auto current = cv::rgbd::OdometryFrame::create(grey, frame.depth);
-  cv::Mat Rt;
-  const bool converged = s.odometry->compute(current, s.keyframe, Rt, toCv(predicted));
-  const auto measured = converged ? rigidMotion(Rt) : std::nullopt;  // keyframe <- current
-  bool ok = measured.has_value();
-  Eigen::Isometry3d T_keyframe_current = ok ? *measured : predicted;
-  const Eigen::Isometry3d step = s.T_keyframe_last.inverse() * T_keyframe_current;
-  if (ok && (step.translation().norm() > options_.max_translation ||
-             rotationDeg(step) > options_.max_rotation_deg)) {
-    ok = false;
-    T_keyframe_current = predicted;
-  }
+  const auto measured = s.measure(grey, frame.depth, predicted, options_);
+  const bool ok = measured.has_value();
+  const Eigen::Isometry3d T_keyframe_current = ok ? *measured : predicted;
   if (!ok) {
     ++failures_;
     MRPT_LOG_WARN_STREAM("frame " << frame.index << ": odometry failed; using the prediction");
@@ -157,7 +155,7 @@ void RgbdOdometryStage::process(core::Frame& frame) {
   s.T_keyframe_last = T_keyframe_current;
   if (!ok || T_keyframe_current.translation().norm() > options_.keyframe_translation ||
       rotationDeg(T_keyframe_current) > options_.keyframe_rotation_deg) {
-    s.keyframe = makeKeyframe();
+    s.keyframe = s.makeKeyframe(grey, frame.depth);
     s.T_world_keyframe = T_world_current;
     s.T_keyframe_last = Eigen::Isometry3d::Identity();
     ++keyframes_;

@@ -35,10 +35,17 @@ TEST(RgbdOdometry, RecoversAKnownCameraMotion) {
   EXPECT_GE(stage.keyframes(), 1u);
 }
 
-TEST(RgbdOdometry, UnknownMethodIsAConfigError) {
-  odometry::RgbdOdometryStage stage;
-  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[O]\nmethod = orb\n"), "O"),
-               core::ConfigError);
-  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[O]\nmax_dept = 3\n"), "O"),
-               core::ConfigError);
+TEST(RgbdOdometry, UnknownMethodKeyOrValueOutOfRangeIsAConfigErrorNamingIt) {
+  for (const char* bad : {"method = orb", "max_dept = 3", "max_depth = 0", "min_depth = -1",
+                          "max_rotation_deg = 0", "keyframe_translation = x"}) {
+    odometry::RgbdOdometryStage stage;
+    try {
+      stage.configure(core::IniConfig::fromText(std::string("[O]\n") + bad, "o.ini"), "O");
+      FAIL() << bad << " accepted";
+    } catch (const core::ConfigError& e) {
+      const std::string key = std::string(bad).substr(0, std::string(bad).find(' '));
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("o.ini"), std::string::npos) << e.what();
+    }
+  }
 }

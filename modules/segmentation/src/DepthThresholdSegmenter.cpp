@@ -1,5 +1,6 @@
 #include "dynslam/segmentation/DepthThresholdSegmenter.h"
 
+#include "ClusterChoice.h"
 #include "dynslam/segmentation/DepthSampling.h"
 #include "dynslam/segmentation/TwoMeans.h"
 
@@ -10,42 +11,42 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
-#include <optional>
 #include <stdexcept>
-#include <string>
 
 namespace dynslam::segmentation {
+namespace {
 
-void DepthThresholdParams::validate() const {
-  const auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
-  if (m < 2) fail("m = " + std::to_string(m) + ": 2-means needs at least 2 samples");
-  if (n < 1) fail("n = " + std::to_string(n) + ": must be at least 1");
-  const std::pair<const char*, double> margins[] = {{"e_person", e_person},
-                                                    {"e_car", e_car},
-                                                    {"e_other_nonrigid", e_other_nonrigid},
-                                                    {"e_other_rigid", e_other_rigid}};
-  for (const auto& [name, e] : margins)
-    if (!(e > 0)) fail(std::string(name) + " = " + std::to_string(e) + ": must be > 0 (metres)");
-  if (!(max_height_person >= 0))
-    fail("max_height_person = " + std::to_string(max_height_person) +
-         ": must be >= 0 (m; 0 = off)");
-  if (!(expected_depth_band >= 0 && expected_depth_band < 1))
-    fail("expected_depth_band = " + std::to_string(expected_depth_band) + ": must be in [0, 1)");
-  if (!(min_valid_fraction > 0 && min_valid_fraction <= 1))
-    fail("min_valid_fraction = " + std::to_string(min_valid_fraction) + ": must be in (0, 1]");
+void requireMetres(const cv::Mat& depth) {
+  if (depth.type() != CV_32FC1)
+    throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
+}
+
+// expected_depth_band: how far (in ratio) both clusters must be from the expected depth before
+// its own samples are sought, and how many of them it takes.
+constexpr double kExpectedMiss = 0.15;
+constexpr int kExpectedMinSamples = 3;
+
+}  // namespace
+
+DepthThresholdParams methodParams() {
+  DepthThresholdParams p;
+  p.object_cluster = ObjectCluster::Far;
+  p.overlap_rule = OverlapRule::Nearer;
+  p.object_depth = ObjectDepth::ClusterMean;
+  p.max_height_person = 0;
+  p.joint_occluders = false;
+  p.retry_taken_surface = false;
+  p.expected_depth_band = 0;
+  return p;
 }
 
 DepthThresholdSegmenter::DepthThresholdSegmenter(DepthThresholdParams params)
-    : params_(std::move(params)) {
-  params_.validate();
-}
+    : params_(std::move(params)) {}
 
 double DepthThresholdSegmenter::marginFor(const core::Detection& detection) const {
   if (detection.category == "person") return params_.e_person;
   if (detection.category == "car") return params_.e_car;
-  return detection.model == core::MotionModel::Rigid ? params_.e_other_rigid
-                                                     : params_.e_other_nonrigid;
+  return detection.model == core::MotionModel::Rigid ? params_.e_car : params_.e_person;
 }
 
 double DepthThresholdSegmenter::maxDepthFor(const core::Detection& detection, double fy) const {
@@ -64,149 +65,11 @@ cv::Rect pixelRoi(const cv::Rect2f& box, cv::Size size) {
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
-namespace {
-
-cv::Rect2d candidateBox(const cv::Rect& roi) {
-  const cv::Rect2d box(roi);
-  return {box.x + box.width / 4, box.y + box.height / 4, box.width / 2, box.height / 2};
-}
-
-// Is `p` inside any of `boxes`?
-bool insideAny(const std::vector<cv::Rect>& boxes, cv::Point p) {
-  return std::any_of(boxes.begin(), boxes.end(), [&](const cv::Rect& b) { return b.contains(p); });
-}
-
-// A detector's box edges are a few pixels off (GroundTruthDetector's 3 px jitter; a box cut at
-// the image's edge ended at 475-479 of 480 rows and passed for one whose feet show): edges
-// within this many pixels of each other or of the image's edge say nothing.
-int edgeTolerance(int rows) { return std::max(2, rows / 50); }
-
-// What the boxes' bottoms say of whether the detection boxed `front` stands in front of the one
-// boxed `back`: on a flat floor the box reaching lower in the image is the nearer one, and a box
-// cut off by the image's bottom edge is nearer than one whose bottom shows. When both are cut
-// off, or their bottoms lie within a detector's few pixels of each other, nothing (nullopt).
-std::optional<bool> bottomsSayInFront(const cv::Rect& front, const cv::Rect& back, int rows) {
-  const int tolerance = edgeTolerance(rows);
-  const int frontBottom = front.y + front.height, backBottom = back.y + back.height;
-  const bool frontCut = frontBottom >= rows - tolerance;
-  const bool backCut = backBottom >= rows - tolerance;
-  if (frontCut != backCut) return frontCut;
-  if (!frontCut && std::abs(frontBottom - backBottom) > tolerance) return frontBottom > backBottom;
-  return std::nullopt;
-}
-
-// Is the near surface of the detection boxed `back`, whose candidate samples split into 2-means
-// clusters `c`, that of the detections boxed `fronts` (one, or several hiding it together)?
-// Yes when (a) `back`'s near samples lie inside the fronts' boxes, and so does that surface
-// wherever it shows in `back`'s whole box (an occluder's pixels are inside its box; a person
-// beside `back` at the same depth shows also outside it), and (b) the surface also shows in the
-// fronts' candidate boxes outside `back`'s box (an occluder is larger than the part of it in
-// front of `back`; a person behind `back` shows there at its own, farther, depth). When the
-// fronts' candidate boxes lie wholly inside `back`'s box, (b) cannot tell, and of two people
-// the one whose box reaches higher in the image is the nearer (heads of similar heights; the
-// bottoms said nothing): indoor_people_high, the surface of the person in front was taken as
-// the hidden person's in most of the severe-occlusion cases that (b) left undecided (seed 16:
-// 1.29 m for 2.44 m).
-bool surfaceInFront(const cv::Mat& depth, const std::vector<cv::Rect>& fronts,
-                    const cv::Rect& back, const TwoMeansResult& c, double margin, int samples) {
-  int nearSamples = 0, nearInside = 0;
-  forEachGridPoint(depth, candidateBox(back), samples, [&](cv::Point p, float z) {
-    if (std::abs(z - c.near_mean) >= std::abs(z - c.far_mean)) return;
-    ++nearSamples;
-    nearInside += insideAny(fronts, p);
-  });
-  if (nearSamples == 0 || nearInside < 0.9 * nearSamples) return false;
-  // The same over the whole of `back`'s box, where a person beside `back` whose box covers the
-  // candidate box still shows (95 %: the floor at the occluder's feet may reach its depth).
-  int nearInBox = 0, nearInFront = 0;
-  forEachGridPoint(depth, cv::Rect2d(back), samples, [&](cv::Point p, float z) {
-    if (std::abs(z - c.near_mean) >= margin) return;
-    ++nearInBox;
-    nearInFront += insideAny(fronts, p);
-  });
-  if (nearInBox == 0 || nearInFront < 0.95 * nearInBox) return false;
-  int outside = 0, onSurface = 0;
-  for (const cv::Rect& front : fronts)
-    forEachGridPoint(depth, candidateBox(front), samples, [&](cv::Point p, float z) {
-      if (back.contains(p)) return;
-      ++outside;
-      onSurface += std::abs(z - c.near_mean) < margin;
-    });
-  const int tolerance = edgeTolerance(depth.rows);
-  if (outside == 0)
-    return std::any_of(fronts.begin(), fronts.end(),
-                       [&](const cv::Rect& f) { return f.y < back.y - tolerance; });
-  return onSurface >= 0.3 * outside;
-}
-
-// Two 2-means clusters more than e apart are two surfaces (an object and what lies behind or
-// before it), not the spread of one.
-bool twoSurfaces(const TwoMeansResult& c, double e) {
-  return c.two_clusters && c.far_mean - c.near_mean > e;
-}
-
-// The mean of all the values a 2-means split.
-double meanOfAll(const TwoMeansResult& c) {
-  return (c.near_mean * c.near_count + c.far_mean * c.far_count) /
-         double(c.near_count + c.far_count);
-}
-
-// Below this share of a candidate box's samples, the far cluster behind an occluder is stray
-// background between the occluder's limbs rather than the object: the occluder hides the whole
-// centre of the box, and the object shows only beside it (behindOccluder).
-constexpr double kFewBehind = 0.25;
-
-// The object's clusters in a box whose near cluster `c.near_mean` is the surface of occluders
-// boxed `occluders`. When the far cluster holds enough of the candidate samples, they are what lies
-// behind the occluder, and may themselves be the object in front of the background, which the
-// far cluster's mean would blur into one depth: of two clusters more than `e` apart, the
-// nearer, as without an occluder. When the occluder hides nearly all of the candidate box, the
-// object is sought where it can show: m grid points over the whole box `roi` outside the
-// occluders' boxes and more than `margin` behind it, split by the same rule. (Tried: only the upper
-// 0.5-0.75 of the box, to keep the floor out, and the nearest compact run of depths rather
-// than 2-means: both worse on indoor_people_high.)
-TwoMeansResult behindOccluder(const cv::Mat& depth, const cv::Rect& roi,
-                              const std::vector<cv::Rect>& occluders,
-                              const std::vector<float>& sorted, const TwoMeansResult& c,
-                              double margin, double e, int m, double maxDepth) {
-  std::vector<float> behind;
-  if (c.far_count < kFewBehind * (c.near_count + c.far_count)) {
-    forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point p, float z) {
-      if (!insideAny(occluders, p) && z > c.near_mean + margin && z <= maxDepth)
-        behind.push_back(z);
-    });
-  }
-  const bool beside = behind.size() >= 4;  // else too little to tell the object from background
-  if (!beside) behind.assign(sorted.end() - c.far_count, sorted.end());
-  const TwoMeansResult rest = twoMeans(behind);
-  TwoMeansResult out = c;
-  if (twoSurfaces(rest, e)) {
-    out.far_mean = rest.near_mean;
-    out.far_count = rest.near_count;
-  } else if (beside) {
-    out.far_mean = meanOfAll(rest);
-    out.far_count = int(behind.size());
-  }
-  return out;
-}
-
-// The cluster choice a depth expected for the object makes: near when its mean is nearer that
-// depth in ratio. `expected` <= 0 or one cluster: `rule`, the choice without it.
 bool nearIsExpected(const TwoMeansResult& c, double expected, bool rule) {
   if (!(expected > 0) || !c.two_clusters || !(c.near_mean > 0)) return rule;
   return core::depthRatio(c.near_mean, expected) > core::depthRatio(c.far_mean, expected);
 }
 
-// expected_depth_band: how far (in ratio) both clusters must be from the expected depth before
-// its own samples are sought, and how many of them it takes.
-constexpr double kExpectedMiss = 0.15;
-constexpr int kExpectedMinSamples = 3;
-
-// The clusters with the object's replaced by the depths within `band` of `expected` among m
-// grid samples over the whole box `roi` (the hidden person shows above or beside its occluder,
-// not in the candidate box it covers) when neither cluster of `c` is within kExpectedMiss of
-// it (expected_depth_band); false, and `c` and `nearIsObject` untouched, otherwise. The
-// nearest of `c`'s clusters stays beside the object: as its occluder when in front of it.
 bool objectAtExpected(const cv::Mat& depth, const cv::Rect& roi, int m, double expected,
                       double band, TwoMeansResult& c, bool& nearIsObject) {
   if (!(band > 0 && expected > 0)) return false;
@@ -232,54 +95,6 @@ bool objectAtExpected(const cv::Mat& depth, const cv::Rect& roi, int m, double e
   c.far_count = nearIsObject ? otherCount : count;
   return true;
 }
-
-// retry_taken_surface: a mask keeping less than this share of its pixels after the overlap step,
-// with another overlapping mask on the same body (d_t within kSameSurface of its own, or nearer
-// by less than e / 2: the flank of the body in front, whose d_t is its front), lost its surface
-// to it. The flank: a hidden person's mask often holds the side of the person in front, 0.1-0.2
-// m behind its front (indoor_people_high seed 2: 1.36 against 1.19 m, 14 %); counting it
-// lowered the severe d_t error after Retrack from 4.29 / 5.90 to 4.12 / 5.66 % (seeds 1-8 /
-// 9-16).
-constexpr double kTakenFraction = 0.2;
-constexpr double kSameSurface = 0.9;
-
-// Did mask i (`before` pixels before the overlap step) lose its surface to another mask? When
-// the step left it empty, or under kTakenFraction of its pixels with another overlapping mask
-// on the same body (e: the margin of mask i's class).
-bool takenSurface(const std::vector<core::ObjectMask>& masks, size_t i, int before, double e) {
-  const int now = cv::countNonZero(masks[i].mask);
-  if (now == 0) return true;
-  if (now >= kTakenFraction * before) return false;
-  for (size_t j = 0; j < masks.size(); ++j) {
-    if (j == i || !masks[j].valid || (masks[j].roi & masks[i].roi).area() <= 0) continue;
-    const double di = masks[i].d_t, dj = masks[j].d_t;
-    if (core::depthRatio(dj, di) >= kSameSurface || (dj < di && di - dj < e / 2)) return true;
-  }
-  return false;
-}
-
-// The clusters of an object hidden behind another's `surface`: m grid points over its whole box
-// `roi` more than e / 2 behind the surface and not beyond `maxDepth` (max_height_person), of
-// whose 2-means the nearer cluster when more than e apart (the object before the wall), else
-// their mean, is the object (far cluster) and the surface its occluder (near cluster). False
-// with fewer than 4 such points.
-bool clustersBehind(const cv::Mat& depth, const cv::Rect& roi, double surface, double e, int m,
-                    double maxDepth, TwoMeansResult& out) {
-  std::vector<float> behind;
-  forEachGridPoint(depth, cv::Rect2d(roi), m, [&](cv::Point, float z) {
-    if (z > surface + e / 2 && z <= maxDepth) behind.push_back(z);
-  });
-  if (behind.size() < 4) return false;
-  const TwoMeansResult rest = twoMeans(behind);
-  out.two_clusters = true;
-  out.near_mean = surface;
-  out.near_count = 0;
-  out.far_count = int(behind.size());
-  out.far_mean = twoSurfaces(rest, e) ? rest.near_mean : meanOfAll(rest);
-  return true;
-}
-
-}  // namespace
 
 bool DepthThresholdSegmenter::candidateClusters(const cv::Mat& depth, const cv::Rect& roi,
                                                 double maxDepth, TwoMeansResult& out,
@@ -308,8 +123,7 @@ core::ObjectMask DepthThresholdSegmenter::segmentOne(const cv::Mat& depth,
                                                      const core::Detection& detection,
                                                      int detectionIndex, double expectedDepth,
                                                      double fy) const {
-  if (depth.type() != CV_32FC1)
-    throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
+  requireMetres(depth);
   core::ObjectMask out;
   out.detection = detectionIndex;
   out.roi = pixelRoi(detection.box, depth.size());
@@ -364,12 +178,24 @@ core::ObjectMask DepthThresholdSegmenter::segmentWith(const cv::Mat& depth,
   return out;
 }
 
+std::vector<BoxClusters> DepthThresholdSegmenter::clusterBoxes(
+    const cv::Mat& depth, const std::vector<core::Detection>& detections, double fy) const {
+  std::vector<BoxClusters> boxes(detections.size());
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    BoxClusters& b = boxes[i];
+    b.roi = pixelRoi(detections[i].box, depth.size());
+    b.e = marginFor(detections[i]);
+    b.maxDepth = maxDepthFor(detections[i], fy);
+    b.ok = candidateClusters(depth, b.roi, b.maxDepth, b.clusters, b.samples);
+  }
+  return boxes;
+}
+
 std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     const cv::Mat& depth, const std::vector<core::Detection>& detections,
     const std::vector<double>& expectedDepth, double fy) const {
   const auto expected = [&](size_t i) { return i < expectedDepth.size() ? expectedDepth[i] : 0.0; };
-  if (depth.type() != CV_32FC1 && !detections.empty())
-    throw std::invalid_argument("DepthThresholdSegmenter: the depth image must be CV_32FC1 (m)");
+  if (!detections.empty()) requireMetres(depth);
   std::vector<core::ObjectMask> masks;
   masks.reserve(detections.size());
   if (params_.object_cluster != ObjectCluster::OccluderAware) {
@@ -378,103 +204,25 @@ std::vector<core::ObjectMask> DepthThresholdSegmenter::segment(
     resolveOverlaps(masks, depth);
     return masks;
   }
-  const size_t n = detections.size();
-  std::vector<cv::Rect> rois(n);
-  std::vector<TwoMeansResult> clusters(n);
-  std::vector<std::vector<float>> samples(n);
-  std::vector<char> ok(n);
-  std::vector<double> maxDepth(n);
-  for (size_t i = 0; i < n; ++i) {
-    rois[i] = pixelRoi(detections[i].box, depth.size());
-    maxDepth[i] = maxDepthFor(detections[i], fy);
-    ok[i] = candidateClusters(depth, rois[i], maxDepth[i], clusters[i], samples[i]);
-  }
-  std::vector<TwoMeansResult> chosen(n);  // the clusters each mask was cut on
-  std::vector<char> chosenNear(n);
-  for (size_t i = 0; i < n; ++i) {
-    if (!ok[i]) {
+  // Every box's clusters first: each object's are then chosen with the others in view.
+  const std::vector<BoxClusters> boxes = clusterBoxes(depth, detections, fy);
+  std::vector<ClusterChoice> chosen(boxes.size());  // the clusters each mask was cut on
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    if (!boxes[i].ok) {
       core::ObjectMask empty;
       empty.detection = int(i);
-      empty.roi = rois[i];
+      empty.roi = boxes[i].roi;
       masks.push_back(empty);
       continue;
     }
-    TwoMeansResult c = clusters[i];
-    const double e = marginFor(detections[i]);
-    bool nearIsObject = twoSurfaces(c, e);
-    bool occluded = false;
-    // Is the near surface another detection standing in front?
-    const cv::Rect2d candidate = candidateBox(rois[i]);
-    // joint_occluders: the detections at the near surface's depth whose bottoms do not put them
-    // behind it.
-    std::vector<cv::Rect> together;
-    double togetherMargin = e;
-    for (size_t j = 0; j < n && nearIsObject; ++j) {
-      if (j == i || !ok[j] || (cv::Rect2d(rois[j]) & candidate).empty()) continue;
-      const double ej = marginFor(detections[j]);
-      const double nearest =
-          clusters[j].two_clusters ? clusters[j].near_mean : clusters[j].far_mean;
-      if (std::abs(nearest - c.near_mean) >= ej &&
-          std::abs(clusters[j].far_mean - c.near_mean) >= ej)
-        continue;
-      // Does j stand in front of i? The bottoms when they tell, else the near surface's place.
-      const std::optional<bool> bottoms = bottomsSayInFront(rois[j], rois[i], depth.rows);
-      if (params_.joint_occluders && bottoms.value_or(true)) {
-        together.push_back(rois[j]);
-        togetherMargin = std::min(togetherMargin, ej);
-      }
-      const bool inFront =
-          bottoms ? *bottoms : surfaceInFront(depth, {rois[j]}, rois[i], c, ej / 2, params_.m);
-      if (!inFront) continue;
-      nearIsObject = false;
-      occluded = true;
-      c = behindOccluder(depth, rois[i], {rois[j]}, samples[i], c, ej / 2, e, params_.m,
-                         maxDepth[i]);
-    }
-    // Two people may hide it together, each covering too little of its box alone (between
-    // them: the near samples split between their boxes).
-    if (nearIsObject && together.size() >= 2 &&
-        surfaceInFront(depth, together, rois[i], c, togetherMargin / 2, params_.m)) {
-      nearIsObject = false;
-      occluded = true;
-      c = behindOccluder(depth, rois[i], together, samples[i], c, togetherMargin / 2, e,
-                         params_.m, maxDepth[i]);
-    }
-    // A detection seen standing in front outweighs the track's depth: a track that followed
-    // the occluder's surface would otherwise keep choosing it.
-    if (!occluded) nearIsObject = nearIsExpected(c, expected(i), nearIsObject);
-    objectAtExpected(depth, rois[i], params_.m, expected(i), params_.expected_depth_band, c,
-                     nearIsObject);
-    masks.push_back(segmentWith(depth, detections[i], int(i), c, nearIsObject, maxDepth[i]));
-    chosen[i] = c;
-    chosenNear[i] = nearIsObject;
+    chosen[i] = chooseWithOthersInView(depth, boxes, i, expected(i), params_);
+    masks.push_back(segmentWith(depth, detections[i], int(i), chosen[i].clusters,
+                                chosen[i].nearIsObject, boxes[i].maxDepth));
   }
-  std::vector<int> cut(n, 0);  // each mask's pixels before the overlap step
   if (params_.retry_taken_surface)
-    for (size_t i = 0; i < n; ++i)
-      if (masks[i].valid && !masks[i].mask.empty()) cut[i] = cv::countNonZero(masks[i].mask);
-  resolveOverlaps(masks, depth);
-  if (!params_.retry_taken_surface) return masks;
-  // A mask whose surface the overlap step gave to another object was cut on that object's
-  // surface: two detections are not one surface, so it is cut again on what its box shows
-  // behind that surface, and the overlaps are resolved again.
-  bool retried = false;
-  for (size_t i = 0; i < n; ++i) {
-    const double e = marginFor(detections[i]);
-    if (!masks[i].valid || !takenSurface(masks, i, cut[i], e)) continue;
-    const TwoMeansResult& c = chosen[i];
-    const double surface = chosenNear[i] ? c.near_mean : c.far_mean;
-    TwoMeansResult behind;
-    if (clustersBehind(depth, rois[i], surface, e, params_.m, maxDepth[i], behind)) {
-      masks[i] = segmentWith(depth, detections[i], int(i), behind, false, maxDepth[i]);
-      retried = true;
-    } else if (cv::countNonZero(masks[i].mask) == 0 && twoSurfaces(c, e)) {
-      // nothing behind: the other cluster
-      masks[i] = segmentWith(depth, detections[i], int(i), c, !chosenNear[i], maxDepth[i]);
-      retried = true;
-    }
-  }
-  if (retried) resolveOverlaps(masks, depth);
+    retryTakenSurfaces(depth, detections, boxes, chosen, masks);
+  else
+    resolveOverlaps(masks, depth);
   return masks;
 }
 
@@ -503,46 +251,6 @@ double maskMedianDepth(const core::ObjectMask& mask, const cv::Mat& depth, int s
       if (in[x] && d[x] > 0 && std::isfinite(d[x])) z.push_back(d[x]);
   }
   return core::upperMedianInPlace(z);
-}
-
-void resolveByClosestDepth(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) {
-  for (size_t a = 0; a < masks.size(); ++a)
-    for (size_t b = a + 1; b < masks.size(); ++b) {
-      core::ObjectMask &A = masks[a], &B = masks[b];
-      if (!A.valid || !B.valid || A.mask.empty() || B.mask.empty()) continue;
-      const cv::Rect overlap = A.roi & B.roi;
-      for (int y = overlap.y; y < overlap.y + overlap.height; ++y) {
-        uint8_t* rowA = A.mask.ptr<uint8_t>(y - A.roi.y) - A.roi.x;
-        uint8_t* rowB = B.mask.ptr<uint8_t>(y - B.roi.y) - B.roi.x;
-        const float* z = depth.ptr<float>(y);
-        for (int x = overlap.x; x < overlap.x + overlap.width; ++x) {
-          if (!rowA[x] || !rowB[x]) continue;
-          const double da = std::abs(z[x] - A.d_t), db = std::abs(z[x] - B.d_t);
-          const bool toA = da < db || (da == db && A.d_t <= B.d_t);
-          (toA ? rowB : rowA)[x] = 0;
-        }
-      }
-    }
-}
-
-void resolveMutualOcclusion(std::vector<core::ObjectMask>& masks) {
-  std::vector<size_t> order;
-  for (size_t i = 0; i < masks.size(); ++i)
-    if (masks[i].valid && !masks[i].mask.empty()) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return masks[a].d_t < masks[b].d_t; });
-  // Nearest first: each mask gives up the pixels that a nearer mask already holds. A pixel in
-  // the range of several objects thus ends in the nearest one; a pixel in one range only
-  // stays where it is.
-  for (size_t k = 1; k < order.size(); ++k) {
-    auto& far = masks[order[k]];
-    for (size_t j = 0; j < k; ++j) {
-      const auto& near = masks[order[j]];
-      const cv::Rect overlap = far.roi & near.roi;
-      if (overlap.empty()) continue;
-      far.mask(overlap - far.roi.tl()).setTo(0, near.mask(overlap - near.roi.tl()));
-    }
-  }
 }
 
 }  // namespace dynslam::segmentation

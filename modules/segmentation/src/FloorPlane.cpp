@@ -116,8 +116,8 @@ std::optional<FloorPlane> fitFloorPlane(const cv::Mat& depth, const core::Camera
   if (!best || best->inliers < p.min_inliers) return std::nullopt;
 
   // The hypothesis's inliers lean with its tilt; choosing them again from each refit converges
-  // within a few rounds (the FloorPlane test's floor: one unweighted refit left it 5.7 cm and
-  // 1.1 deg off with f = 500 px; with these rounds 7 mm and 0.15 deg at its f = 525 px).
+  // within a few rounds (one refit left the plane centimetres off: docs/notes/perception.md,
+  // 2026-11-28).
   FloorPlane refined = *best;
   for (int round = 0; round < 8; ++round) {
     std::vector<const Sample*> inliers;

@@ -1,75 +1,32 @@
 #include "dynslam/segmentation/FloorRemovalStage.h"
 
-#include <mrpt/config/CConfigFileBase.h>
-
-#include <stdexcept>
-#include <string>
-
 namespace dynslam::segmentation {
-namespace {
 
-void require(bool ok, const char* key, double value, const char* rule) {
-  if (!ok)
-    throw std::invalid_argument(std::string(key) + " = " + std::to_string(value) + ": must be " +
-                                rule);
-}
-
-void validate(const FloorRemovalOptions& o) {
-  const auto& p = o.plane;
-  require(p.sample_stride_px >= 1, "sample_stride_px", p.sample_stride_px, ">= 1");
-  require(p.iterations >= 1, "iterations", p.iterations, ">= 1");
-  require(p.inlier_m > 0, "inlier_m", p.inlier_m, "> 0");
-  require(p.depth_sigma_z2 >= 0, "depth_sigma_z2", p.depth_sigma_z2, ">= 0");
-  require(p.max_depth_m > 0, "max_depth_m", p.max_depth_m, "> 0");
-  require(p.max_tilt_deg > 0 && p.max_tilt_deg < 90, "max_tilt_deg", p.max_tilt_deg, "in (0, 90)");
-  require(p.min_inliers >= 3, "min_inliers", p.min_inliers, ">= 3");
-  require(o.margin_m >= 0, "margin_m", o.margin_m, ">= 0");
-  require(o.margin_sigmas >= 0, "margin_sigmas", o.margin_sigmas, ">= 0");
-}
-
-}  // namespace
-
-void FloorRemovalOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                             const std::string& s) {
-  plane.sample_stride_px = c.read_int(s, "sample_stride_px", plane.sample_stride_px);
-  plane.iterations = c.read_int(s, "iterations", plane.iterations);
-  plane.inlier_m = c.read_double(s, "inlier_m", plane.inlier_m);
-  plane.depth_sigma_z2 = c.read_double(s, "depth_sigma_z2", plane.depth_sigma_z2);
-  plane.max_depth_m = c.read_double(s, "max_depth_m", plane.max_depth_m);
-  plane.max_tilt_deg = c.read_double(s, "max_tilt_deg", plane.max_tilt_deg);
-  plane.min_inliers = c.read_int(s, "min_inliers", plane.min_inliers);
-  margin_m = c.read_double(s, "margin_m", margin_m);
-  margin_sigmas = c.read_double(s, "margin_sigmas", margin_sigmas);
-}
-
-void FloorRemovalOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                           const std::string& s) const {
-  core::writeKey(c, s, "sample_stride_px", plane.sample_stride_px,
-                 "px; the floor is fitted to depth samples on a grid of this pitch outside the "
-                 "masks' boxes");
-  core::writeKey(c, s, "iterations", plane.iterations, "RANSAC hypotheses of the floor plane");
-  core::writeKey(c, s, "inlier_m", plane.inlier_m,
-                 "m; a sample within this (plus 2 sigma(z)) of a plane supports it");
-  core::writeKey(c, s, "depth_sigma_z2", plane.depth_sigma_z2,
-                 "1/m; depth noise sigma(z) = depth_sigma_z2 z^2");
-  core::writeKey(c, s, "max_depth_m", plane.max_depth_m, "m; farther samples are not fitted");
-  core::writeKey(c, s, "max_tilt_deg", plane.max_tilt_deg,
-                 "deg; the floor's normal is within this of up (the accelerometer's mean "
-                 "reading in the frame, else the image's up)");
-  core::writeKey(c, s, "min_inliers", plane.min_inliers,
-                 "samples on the plane for a floor to count as seen");
-  core::writeKey(c, s, "margin_m", margin_m,
-                 "m; mask pixels less than this (plus margin_sigmas sigma(z)) above the floor "
-                 "leave the mask");
-  core::writeKey(c, s, "margin_sigmas", margin_sigmas,
-                 "depth-noise sigmas added to margin_m at each pixel's depth");
+void FloorRemovalOptions::describe(core::OptionVisitor& v) {
+  using core::Range;
+  auto& p = plane;
+  v.key("sample_stride_px", p.sample_stride_px, Range::atLeast(1),
+        "px; the floor is fitted to depth samples on a grid of this pitch outside the masks' "
+        "boxes");
+  v.key("iterations", p.iterations, Range::atLeast(1), "RANSAC hypotheses of the floor plane");
+  v.key("inlier_m", p.inlier_m, Range::above(0),
+        "m; a sample within this (plus 2 sigma(z)) of a plane supports it");
+  v.key("depth_sigma_z2", p.depth_sigma_z2, Range::atLeast(0),
+        "1/m; depth noise sigma(z) = depth_sigma_z2 z^2");
+  v.key("max_depth_m", p.max_depth_m, Range::above(0), "m; farther samples are not fitted");
+  v.key("max_tilt_deg", p.max_tilt_deg, Range{0, 90, true, true},
+        "deg; the floor's normal is within this of up (the accelerometer's mean reading in the "
+        "frame, else the image's up)");
+  v.key("min_inliers", p.min_inliers, Range::atLeast(3),
+        "samples on the plane for a floor to count as seen");
+  v.key("margin_m", margin_m, Range::atLeast(0),
+        "m; mask pixels less than this above the floor (or below it) leave the mask");
 }
 
 size_t removeFloorPixels(const cv::Mat& depth, const core::CameraIntrinsics& K,
                          const FloorPlane& floor, const FloorRemovalOptions& options,
                          core::ObjectMask& mask) {
   if (mask.mask.empty()) return 0;
-  const double sigma2 = options.margin_sigmas * options.plane.depth_sigma_z2;
   // height = z (n . ray) + c with ray = ((u - cx) / fx, (v - cy) / fy, 1): one term per column
   // and one per row.
   std::vector<double> column(size_t(mask.roi.width));
@@ -85,7 +42,7 @@ size_t removeFloorPixels(const cv::Mat& depth, const core::CameraIntrinsics& K,
       const double z = d[x];
       if (!m[x] || !(z > 0)) continue;
       const double height = z * (column[size_t(x)] + row) + floor.offset;
-      if (height < options.margin_m + sigma2 * z * z) {
+      if (height < options.margin_m) {
         m[x] = 0;
         ++removed;
       }
@@ -95,12 +52,7 @@ size_t removeFloorPixels(const cv::Mat& depth, const core::CameraIntrinsics& K,
 }
 
 void FloorRemovalStage::configure(const core::IniConfig& cfg, const std::string& section) {
-  try {
-    core::loadOptionsStrict(options_, cfg, section);
-    validate(options_);
-  } catch (const std::invalid_argument& e) {
-    throw core::ConfigError("[" + section + "] " + e.what() + " (in " + cfg.source() + ")");
-  }
+  core::loadOptionsStrict(options_, cfg, section);
 }
 
 void FloorRemovalStage::process(core::Frame& frame) {

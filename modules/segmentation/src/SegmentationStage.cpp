@@ -1,7 +1,5 @@
 #include "dynslam/segmentation/SegmentationStage.h"
 
-#include <mrpt/config/CConfigFileBase.h>
-
 #include <stdexcept>
 
 namespace dynslam::segmentation {
@@ -31,90 +29,67 @@ void requireDepth(const core::Frame& frame, size_t boxes, const char* what) {
 
 }  // namespace
 
-void SegmentationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                             const std::string& s) {
+void SegmentationOptions::describe(core::OptionVisitor& v) {
+  using core::Range;
   auto& p = params;
-  p.m = c.read_int(s, "m", p.m);
-  p.n = c.read_int(s, "n", p.n);
-  p.e_person = c.read_double(s, "e_person", p.e_person);
-  p.e_car = c.read_double(s, "e_car", p.e_car);
-  p.e_other_nonrigid = c.read_double(s, "e_other_nonrigid", p.e_other_nonrigid);
-  p.e_other_rigid = c.read_double(s, "e_other_rigid", p.e_other_rigid);
-  p.min_valid_fraction = c.read_double(s, "min_valid_fraction", p.min_valid_fraction);
-  p.max_height_person = c.read_double(s, "max_height_person", p.max_height_person);
-  p.expected_depth_band = c.read_double(s, "expected_depth_band", p.expected_depth_band);
-  p.retry_taken_surface = core::readBool(c, s, "retry_taken_surface", p.retry_taken_surface);
-  p.joint_occluders = core::readBool(c, s, "joint_occluders", p.joint_occluders);
-  p.object_cluster = core::readKeyword(c, s, "object_cluster", p.object_cluster, kClusters);
-  p.overlap_rule = core::readKeyword(c, s, "overlap_rule", p.overlap_rule, kOverlapRules);
-  p.object_depth = core::readKeyword(c, s, "object_depth", p.object_depth, kObjectDepths);
-  boxes = core::readKeyword(c, s, "boxes", boxes, kBoxes);
-  max_track_misses = c.read_int(s, "max_track_misses", max_track_misses);
-  if (max_track_misses < 0)
-    throw std::invalid_argument("max_track_misses = " + std::to_string(max_track_misses) +
-                                ": must be >= 0 (0: every confirmed track)");
-}
-
-void SegmentationOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                           const std::string& s) const {
-  const auto& p = params;
-  core::writeKey(c, s, "m", p.m, "depth samples on an even grid over the candidate box (central half of the box)");
-  core::writeKey(c, s, "n", p.n, "depth samples on an even grid over the upper half of the box (background)");
-  core::writeKey(c, s, "e_person", p.e_person, "m; depth margin e of people (method: 0.5)");
-  core::writeKey(c, s, "e_car", p.e_car, "m; depth margin e of cars (method: 3.0)");
-  core::writeKey(c, s, "e_other_nonrigid", p.e_other_nonrigid, "m; e of other classes mapped to non-rigid");
-  core::writeKey(c, s, "e_other_rigid", p.e_other_rigid, "m; e of other classes mapped to rigid");
-  core::writeKey(c, s, "min_valid_fraction", p.min_valid_fraction,
+  const Range metres = Range::above(0);
+  v.key("m", p.m, Range::atLeast(2),
+        "depth samples on an even grid over the candidate box (central half of the box)");
+  v.key("n", p.n, Range::atLeast(1),
+        "depth samples on an even grid over the upper half of the box (background)");
+  v.key("e_person", p.e_person, metres,
+        "m; depth margin e of people (method: 0.5), and of other classes mapped to non_rigid");
+  v.key("e_car", p.e_car, metres,
+        "m; depth margin e of cars (method: 3.0), and of other classes mapped to rigid");
+  v.key("min_valid_fraction", p.min_valid_fraction, Range{0, 1, true, false},
         "of the m samples with depth, else the mask is not valid (empty)");
-  core::writeKey(
-      c, s, "max_height_person", p.max_height_person,
-      "m; 0 = off. Not the method: a person is at most this tall, so a box h px high holds "
-      "nothing of it beyond max_height_person * fy / h; farther samples are background");
-  core::writeKey(
-      c, s, "expected_depth_band", p.expected_depth_band,
-      "0 = off. With boxes = tracked_detections, when neither cluster is within 15 % of the "
-      "track's depth, the samples within this fraction of it are the object (not the method)");
-  core::writeKey(
-      c, s, "retry_taken_surface", p.retry_taken_surface,
-      "with occluder_aware: a mask whose surface the overlap step gives to another object is "
-      "cut again on what its box shows behind that surface (not the method)");
-  core::writeKey(
-      c, s, "joint_occluders", p.joint_occluders,
-      "with occluder_aware: when no single nearer detection passes as the occluder, those at "
-      "the near surface's depth are tested together (a person between two nearer people; not "
-      "the method)");
-  core::writeKey(
-      c, s, "object_cluster", std::string(core::wordOf(p.object_cluster, kClusters)),
-      "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
-      "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
-      "variants, not the method)");
-  core::writeKey(
-      c, s, "overlap_rule", std::string(core::wordOf(p.overlap_rule, kOverlapRules)),
-      "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
-      "the object whose d_t is closest to the pixel's depth; connected = the object whose "
-      "depth-continuous surface reaches it (both not the method)");
-  core::writeKey(
-      c, s, "object_depth", std::string(core::wordOf(p.object_depth, kObjectDepths)),
-      "the d_t each mask reports: cluster_mean = the object's 2-means cluster (method.md); "
-      "mask_median = the median depth of the final mask (not the method)");
-  core::writeKey(
-      c, s, "boxes", std::string(core::wordOf(boxes, kBoxes)),
-      "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "
-      "tracks no detection took this frame (list the stage again after Tracking); "
-      "tracked_detections: the detections again, each object cluster chosen by its track's "
-      "depth (after Tracking; not the method)");
-  core::writeKey(c, s, "max_track_misses", max_track_misses,
-                 "predicted_tracks: only tracks coasting at most this many frames get a mask "
-                 "(0: every confirmed track; not the method)");
+  v.key("max_height_person", p.max_height_person, Range::atLeast(0),
+        "m; 0 = off. Not the method: a person is at most this tall, so a box h px high holds "
+        "nothing of it beyond max_height_person * fy / h; farther samples are background");
+  v.key("expected_depth_band", p.expected_depth_band, Range::closedOpen(0, 1),
+        "0 = off; when neither cluster is within 15 % of the track's depth, the samples within "
+        "this fraction of it are the object (not the method)");
+  v.key("retry_taken_surface", p.retry_taken_surface,
+        "a mask whose surface the overlap step gives to another object is cut again on what its "
+        "box shows behind that surface (not the method)");
+  v.key("joint_occluders", p.joint_occluders,
+        "when no single nearer detection passes as the occluder, those at the near surface's "
+        "depth are tested together (a person between two nearer people; not the method)");
+  v.key("object_cluster", p.object_cluster, kClusters,
+        "far: the far 2-means cluster is the object (method.md); larger: the cluster with more "
+        "samples; occluder_aware: the near cluster unless a nearer detection claims it (both "
+        "variants, not the method)");
+  v.key("overlap_rule", p.overlap_rule, kOverlapRules,
+        "pixels several masks hold: nearer = the nearest object (method.md); closest_depth = "
+        "the object whose d_t is closest to the pixel's depth; connected = the object whose "
+        "depth-continuous surface reaches it (both not the method)");
+  v.key("object_depth", p.object_depth, kObjectDepths,
+        "the d_t each mask reports: cluster_mean = the object's 2-means cluster (method.md); "
+        "mask_median = the median depth of the final mask (not the method)");
+  v.key("boxes", boxes, kBoxes,
+        "detections: the detector's boxes; predicted_tracks: the predicted boxes of confirmed "
+        "tracks no detection took this frame (list the stage again after Tracking); "
+        "tracked_detections: the detections again, each object cluster chosen by its track's "
+        "depth (after Tracking; not the method)");
+  v.key("max_track_misses", max_track_misses, Range::atLeast(0),
+        "only tracks coasting at most this many frames get a mask (0: every confirmed track; "
+        "not the method): a track coasting long predicts a box where its object no longer is");
+
+  // Settings that act only through another: set alone, they would silently do nothing.
+  const bool occluderAware = p.object_cluster == ObjectCluster::OccluderAware;
+  v.requires("retry_taken_surface", p.retry_taken_surface, "object_cluster = occluder_aware",
+             occluderAware);
+  v.requires("joint_occluders", p.joint_occluders, "object_cluster = occluder_aware",
+             occluderAware);
+  v.requires("expected_depth_band", p.expected_depth_band > 0, "boxes = tracked_detections",
+             boxes == SegmentedBoxes::TrackedDetections);
+  v.requires("max_track_misses", max_track_misses > 0, "boxes = predicted_tracks",
+             boxes == SegmentedBoxes::PredictedTracks);
 }
 
 void SegmentationStage::configure(const core::IniConfig& cfg, const std::string& section) {
-  try {
-    core::loadOptionsStrict(options_, cfg, section);
-    segmenter_ = DepthThresholdSegmenter(options_.params);
-  } catch (const std::invalid_argument& e) {
-    throw core::ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
-  }
+  core::loadOptionsStrict(options_, cfg, section);
+  segmenter_ = DepthThresholdSegmenter(options_.params);
 }
 
 void SegmentationStage::segmentPredictedTracks(core::Frame& frame) const {

@@ -27,6 +27,11 @@ cv::Mat scene(float wall, float pole = 0) {
   return depth;
 }
 
+// The method as method.md states it (the defaults are the shipped configuration).
+DepthThresholdSegmenter theMethod() {
+  return DepthThresholdSegmenter(segmentation::methodParams());
+}
+
 core::Detection detection(const cv::Rect2f& box, const std::string& category = "person") {
   core::Detection d;
   d.box = box;
@@ -39,7 +44,7 @@ core::Detection detection(const cv::Rect2f& box, const std::string& category = "
 
 TEST(DepthThresholdSegmenter, NoOccluderAndAFarWallTakeTheMidpointBehind) {
   const cv::Mat depth = scene(5.0f);
-  const auto m = DepthThresholdSegmenter().segmentOne(depth, detection(kBox), 3);
+  const auto m = theMethod().segmentOne(depth, detection(kBox), 3);
   ASSERT_TRUE(m.valid);
   EXPECT_EQ(m.detection, 3);
   EXPECT_EQ(m.roi, kBox);
@@ -54,7 +59,7 @@ TEST(DepthThresholdSegmenter, NoOccluderAndAFarWallTakeTheMidpointBehind) {
 
 TEST(DepthThresholdSegmenter, AnOccluderInFrontTakesTheMidpointInFront) {
   const cv::Mat depth = scene(5.0f, 1.0f);
-  const auto m = DepthThresholdSegmenter().segmentOne(depth, detection(kBox), 0);
+  const auto m = theMethod().segmentOne(depth, detection(kBox), 0);
   ASSERT_TRUE(m.valid);
   EXPECT_DOUBLE_EQ(m.d_t, 2.0) << "far cluster: 40 samples at 2 m";
   EXPECT_DOUBLE_EQ(m.d_o, 1.0) << "near cluster: 24 samples on the pole";
@@ -69,7 +74,7 @@ TEST(DepthThresholdSegmenter, AnOccluderInFrontTakesTheMidpointInFront) {
 TEST(DepthThresholdSegmenter, ANearClusterWithinEIsNoOccluderAndACloseWallIsNoBackground) {
   // A pole only 0.2 m in front and a wall only 0.3 m behind: both within e = 0.5 m.
   const cv::Mat depth = scene(2.3f, 1.8f);
-  const auto m = DepthThresholdSegmenter().segmentOne(depth, detection(kBox), 0);
+  const auto m = theMethod().segmentOne(depth, detection(kBox), 0);
   ASSERT_TRUE(m.valid);
   EXPECT_DOUBLE_EQ(m.d_t, 2.0);
   EXPECT_EQ(m.d_o, 0.0) << "d_t - d_o = 0.2 <= e";
@@ -83,7 +88,7 @@ TEST(DepthThresholdSegmenter, NoDepthBehindMeansNoBackground) {
   // The wall beyond the sensor's range (0): the upper half's valid samples are all on the
   // object, so d_b = d_t and T_max = d_t + e.
   const cv::Mat depth = scene(0.0f);
-  const auto m = DepthThresholdSegmenter().segmentOne(depth, detection(kBox), 0);
+  const auto m = theMethod().segmentOne(depth, detection(kBox), 0);
   ASSERT_TRUE(m.valid);
   EXPECT_DOUBLE_EQ(m.d_b, 2.0);
   EXPECT_DOUBLE_EQ(m.t_max, 2.5);
@@ -93,7 +98,7 @@ TEST(DepthThresholdSegmenter, NoDepthBehindMeansNoBackground) {
 TEST(DepthThresholdSegmenter, CarsUseTheirOwnMarginAndNeverTakeMissingDepth) {
   cv::Mat depth = scene(5.0f);
   depth(cv::Rect(45, 60, 10, 10)).setTo(0);  // a hole in the depth, inside the box
-  DepthThresholdSegmenter segmenter;
+  const DepthThresholdSegmenter segmenter = theMethod();
   EXPECT_EQ(segmenter.marginFor(detection(kBox, "car")), 3.0);
   EXPECT_EQ(segmenter.marginFor(detection(kBox, "person")), 0.5);
   auto truck = detection(kBox, "truck");
@@ -101,6 +106,12 @@ TEST(DepthThresholdSegmenter, CarsUseTheirOwnMarginAndNeverTakeMissingDepth) {
   EXPECT_EQ(segmenter.marginFor(truck), 3.0);
   truck.model = core::MotionModel::NonRigid;
   EXPECT_EQ(segmenter.marginFor(truck), 0.5);
+  auto p = segmentation::methodParams();  // other classes take the margin of their motion model
+  p.e_car = 2.0;
+  p.e_person = 0.4;
+  EXPECT_EQ(DepthThresholdSegmenter(p).marginFor(truck), 0.4);
+  truck.model = core::MotionModel::Rigid;
+  EXPECT_EQ(DepthThresholdSegmenter(p).marginFor(truck), 2.0);
 
   const auto m = segmenter.segmentOne(depth, detection(kBox, "car"), 0);
   ASSERT_TRUE(m.valid);
@@ -112,7 +123,7 @@ TEST(DepthThresholdSegmenter, CarsUseTheirOwnMarginAndNeverTakeMissingDepth) {
 TEST(DepthThresholdSegmenter, TooFewValidDepthsInTheCandidateBoxGiveNoMask) {
   cv::Mat depth = scene(5.0f);
   depth(cv::Rect(58, 35, 27, 30)).setTo(0);  // M keeps its first sample column (x = 56) only
-  const DepthThresholdSegmenter segmenter;   // needs 25 % of 64 = 16 valid samples
+  const DepthThresholdSegmenter segmenter = theMethod();  // needs 25 % of 64 = 16 samples
   const auto m = segmenter.segmentOne(depth, detection(kBox), 1);
   EXPECT_FALSE(m.valid) << "8 valid samples";
   EXPECT_TRUE(m.mask.empty());
@@ -121,7 +132,7 @@ TEST(DepthThresholdSegmenter, TooFewValidDepthsInTheCandidateBoxGiveNoMask) {
 
   depth(cv::Rect(58, 35, 4, 30)).setTo(2.0f);  // columns 56 and 60: 16 samples
   EXPECT_TRUE(segmenter.segmentOne(depth, detection(kBox), 1).valid);
-  segmentation::DepthThresholdParams strict;
+  auto strict = segmentation::methodParams();
   strict.min_valid_fraction = 0.3;
   EXPECT_FALSE(DepthThresholdSegmenter(strict).segmentOne(depth, detection(kBox), 1).valid);
 }
@@ -129,30 +140,22 @@ TEST(DepthThresholdSegmenter, TooFewValidDepthsInTheCandidateBoxGiveNoMask) {
 TEST(DepthThresholdSegmenter, ABoxPartlyOutsideTheImageIsClippedFirst) {
   cv::Mat depth(120, 160, CV_32FC1, cv::Scalar(5.0f));
   depth(cv::Rect(0, 35, 50, 85)).setTo(2.0f);  // an object cut by the image's left edge
-  const auto m = DepthThresholdSegmenter().segmentOne(depth, detection({-30, 20, 90, 60}), 0);
+  const auto m = theMethod().segmentOne(depth, detection({-30, 20, 90, 60}), 0);
   EXPECT_EQ(m.roi, cv::Rect(0, 20, 60, 60));
   ASSERT_TRUE(m.valid);
   EXPECT_EQ(m.mask.size(), m.roi.size());
   EXPECT_DOUBLE_EQ(m.d_t, 2.0);
   EXPECT_EQ(cv::countNonZero(m.mask), 50 * 45);
 
-  const auto outside = DepthThresholdSegmenter().segmentOne(depth, detection({170, 0, 20, 20}), 0);
+  const auto outside = theMethod().segmentOne(depth, detection({170, 0, 20, 20}), 0);
   EXPECT_FALSE(outside.valid);
   EXPECT_TRUE(outside.roi.empty());
 }
 
-TEST(DepthThresholdSegmenter, RejectsBadInputAndBadParameters) {
+TEST(DepthThresholdSegmenter, RejectsADepthImageNotInMetres) {
   const cv::Mat mm(120, 160, CV_16UC1, cv::Scalar(2000));
-  EXPECT_THROW(DepthThresholdSegmenter().segmentOne(mm, detection(kBox), 0), std::invalid_argument);
-  segmentation::DepthThresholdParams p;
-  p.m = 1;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
-  p = {};
-  p.e_car = 0;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
-  p = {};
-  p.min_valid_fraction = 1.5;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
+  EXPECT_THROW(theMethod().segmentOne(mm, detection(kBox), 0), std::invalid_argument);
+  EXPECT_THROW(theMethod().segment(mm, {detection(kBox)}), std::invalid_argument);
 }
 
 TEST(DepthThresholdSegmenter, TheLargerClusterVariantTakesTheMajorityOfTheCandidateBox) {
@@ -160,10 +163,10 @@ TEST(DepthThresholdSegmenter, TheLargerClusterVariantTakesTheMajorityOfTheCandid
   // behind); the non-default variant object_cluster = larger takes the pole.
   cv::Mat depth = scene(5.0f);
   depth(cv::Rect(55, 0, 17, 120)).setTo(1.0f);
-  const auto method = DepthThresholdSegmenter().segmentOne(depth, detection(kBox), 0);
+  const auto method = theMethod().segmentOne(depth, detection(kBox), 0);
   EXPECT_DOUBLE_EQ(method.d_t, 2.0);
   EXPECT_DOUBLE_EQ(method.d_o, 1.0);
-  segmentation::DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = segmentation::ObjectCluster::Larger;
   const auto larger = DepthThresholdSegmenter(p).segmentOne(depth, detection(kBox), 0);
   EXPECT_DOUBLE_EQ(larger.d_t, 1.0) << "40 samples on the pole, 24 on the object";
@@ -178,7 +181,7 @@ TEST(DepthThresholdSegmenter, TheLargerClusterVariantTakesTheMajorityOfTheCandid
 TEST(DepthThresholdSegmenter, MaxHeightLeavesTheWallBeyondTheTallestPersonOut) {
   cv::Mat depth(120, 160, CV_32FC1, cv::Scalar(5.0f));
   depth(cv::Rect(55, 0, 17, 120)).setTo(2.0f);
-  segmentation::DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   EXPECT_DOUBLE_EQ(DepthThresholdSegmenter(p).segment(depth, {detection(kBox)}, {}, 100)[0].d_t,
                    5.0);
   p.max_height_person = 2.2;
@@ -196,8 +199,6 @@ TEST(DepthThresholdSegmenter, MaxHeightLeavesTheWallBeyondTheTallestPersonOut) {
   const auto wallOnly = bounded.segment(depth, {detection({100, 20, 40, 60})}, {}, 100);
   EXPECT_TRUE(wallOnly[0].valid) << "nothing at a possible depth: every sample stays";
   EXPECT_DOUBLE_EQ(wallOnly[0].d_t, 5.0);
-  p.max_height_person = -1;
-  EXPECT_THROW(DepthThresholdSegmenter{p}, std::invalid_argument);
 }
 
 // object_depth = mask_median (not the method): d_t is the median depth of the final mask, not
@@ -210,7 +211,7 @@ TEST(DepthThresholdSegmenter, MaskMedianDepthIsTheMedianOfTheFinalMask) {
   const cv::Rect box(40, 0, 40, 80);
   depth(cv::Rect(40, 0, 40, 48)).setTo(2.0f);
   depth(cv::Rect(40, 48, 40, 32)).setTo(2.4f);
-  segmentation::DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   const auto method = DepthThresholdSegmenter(p).segment(depth, {detection(box)});
   ASSERT_EQ(method.size(), 1u);
   EXPECT_NEAR(method[0].d_t, 2.4, 1e-6) << "the far cluster's mean";

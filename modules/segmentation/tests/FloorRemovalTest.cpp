@@ -88,6 +88,29 @@ TEST(FloorPlane, UpComesFromTheAccelerometerElseTheImage) {
       << "IMU and camera share axes here (both extrinsics identity)";
 }
 
+namespace {
+
+// A depth-threshold mask of the person's box: everything within 0.5 m of its depth, which takes
+// the floor around its feet too; `floorPixels`: how many of its pixels are floor (`exact` is
+// the scene without noise, `exactFloor` the floor alone).
+core::ObjectMask personBoxMask(const cv::Mat& depth, const cv::Mat& exact,
+                               const cv::Mat& exactFloor, int& floorPixels) {
+  core::ObjectMask m;
+  m.roi = cv::Rect(kPersonU0 - 20, 100, kPersonU1 - kPersonU0 + 40, 380);
+  m.mask = cv::Mat(m.roi.size(), CV_8UC1, cv::Scalar(0));
+  for (int y = 0; y < m.roi.height; ++y)
+    for (int x = 0; x < m.roi.width; ++x) {
+      const float z = depth.at<float>(m.roi.y + y, m.roi.x + x);
+      if (std::abs(z - kPersonZ) > 0.5) continue;
+      m.mask.at<uint8_t>(y, x) = 255;
+      floorPixels += exact.at<float>(m.roi.y + y, m.roi.x + x) ==
+                     exactFloor.at<float>(m.roi.y + y, m.roi.x + x);
+    }
+  return m;
+}
+
+}  // namespace
+
 TEST(FloorRemovalStage, CutsTheFloorAtAPersonsFeetAndKeepsThePerson) {
   core::StageRegistry registry;
   segmentation::registerStages(registry);
@@ -104,20 +127,8 @@ TEST(FloorRemovalStage, CutsTheFloorAtAPersonsFeetAndKeepsThePerson) {
   s.acc = 9.81 * upWhenPitched(pitch);
   s.has_acc = true;
   frame.imu.push_back(s);
-  // A depth-threshold mask of the person's box: everything within 0.5 m of its depth, which
-  // takes the floor around its feet too.
-  core::ObjectMask m;
-  m.roi = cv::Rect(kPersonU0 - 20, 100, kPersonU1 - kPersonU0 + 40, 380);
-  m.mask = cv::Mat(m.roi.size(), CV_8UC1, cv::Scalar(0));
   int floorBefore = 0;
-  for (int y = 0; y < m.roi.height; ++y)
-    for (int x = 0; x < m.roi.width; ++x) {
-      const float z = frame.depth.at<float>(m.roi.y + y, m.roi.x + x);
-      if (std::abs(z - kPersonZ) > 0.5) continue;
-      m.mask.at<uint8_t>(y, x) = 255;
-      floorBefore += exact.at<float>(m.roi.y + y, m.roi.x + x) ==
-                     exactFloor.at<float>(m.roi.y + y, m.roi.x + x);
-    }
+  const core::ObjectMask m = personBoxMask(frame.depth, exact, exactFloor, floorBefore);
   ASSERT_GT(floorBefore, 500) << "the scene must put floor into the mask";
   frame.object_masks.push_back(m);
   const cv::Mat before = m.mask.clone();
@@ -152,14 +163,13 @@ TEST(FloorRemovalStage, CutsTheFloorAtAPersonsFeetAndKeepsThePerson) {
 
 TEST(FloorRemovalStage, ReadsItsKeysAndNamesBadValues) {
   segmentation::FloorRemovalStage stage;
-  stage.configure(core::IniConfig::fromText("[F]\nmargin_m = 0.05\nmargin_sigmas = 1\n"
+  stage.configure(core::IniConfig::fromText("[F]\nmargin_m = 0.05\n"
                                             "max_tilt_deg = 15\nmin_inliers = 40\n"
                                             "sample_stride_px = 4\niterations = 50\n"
                                             "inlier_m = 0.03\ndepth_sigma_z2 = 0.002\n"
                                             "max_depth_m = 5\n"),
                   "F");
   EXPECT_EQ(stage.options().margin_m, 0.05);
-  EXPECT_EQ(stage.options().margin_sigmas, 1.0);
   EXPECT_EQ(stage.options().plane.max_tilt_deg, 15.0);
   EXPECT_EQ(stage.options().plane.min_inliers, 40);
   EXPECT_EQ(stage.options().plane.sample_stride_px, 4);

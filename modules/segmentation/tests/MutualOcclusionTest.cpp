@@ -57,7 +57,8 @@ TEST(MutualOcclusion, EachObjectKeepsTheOverlapPixelsOnlyItsRangeHolds) {
   depth(cv::Rect(60, 30, 70, 90)).setTo(3.5f);
   depth(cv::Rect(40, 30, 55, 90)).setTo(2.0f);
   const cv::Rect boxA(35, 20, 65, 100), boxB(70, 20, 60, 100), overlap = boxA & boxB;
-  const auto masks = DepthThresholdSegmenter().segment(depth, {person(boxA), person(boxB)});
+  const auto masks = DepthThresholdSegmenter(segmentation::methodParams())
+                         .segment(depth, {person(boxA), person(boxB)});
   ASSERT_EQ(masks.size(), 2u);
   ASSERT_TRUE(masks[0].valid && masks[1].valid);
   EXPECT_EQ(masks[0].detection, 0);
@@ -78,7 +79,7 @@ TEST(MutualOcclusion, TheNearerObjectWinsPixelsBothRangesHold) {
   depth(cv::Rect(80, 30, 50, 90)).setTo(2.4f);
   depth(cv::Rect(40, 30, 40, 90)).setTo(2.0f);
   const cv::Rect boxA(35, 20, 55, 100), boxB(70, 20, 60, 100), overlap = boxA & boxB;
-  const DepthThresholdSegmenter segmenter;
+  const DepthThresholdSegmenter segmenter(segmentation::methodParams());
   const auto alone = segmenter.segmentOne(depth, person(boxB), 1);
   ASSERT_TRUE(alone.valid);
   EXPECT_GT(ownedIn(alone, overlap, depth, 2.0f), 0) << "alone, B takes some of A's pixels";
@@ -101,8 +102,8 @@ TEST(MutualOcclusion, TheNearerObjectWinsPixelsBothRangesHold) {
 TEST(MutualOcclusion, InvalidMasksTakePartInNothing) {
   cv::Mat depth(120, 200, CV_32FC1, cv::Scalar(2.0f));
   depth(cv::Rect(70, 20, 60, 100)).setTo(0);  // no depth at all in B's box
-  const auto masks = DepthThresholdSegmenter().segment(
-      depth, {person({35, 20, 55, 100}), person({70, 20, 60, 100})});
+  const auto masks = DepthThresholdSegmenter(segmentation::methodParams())
+                         .segment(depth, {person({35, 20, 55, 100}), person({70, 20, 60, 100})});
   ASSERT_EQ(masks.size(), 2u);
   EXPECT_TRUE(masks[0].valid);
   EXPECT_FALSE(masks[1].valid);
@@ -120,7 +121,7 @@ TEST(SegmentationMutualOcclusion, ClosestDepthKeepsAPersonJustBehindAnother) {
   const std::vector<core::Detection> boxes = {person({50, 30, 120, 200}),
                                               person({120, 30, 150, 200})};
   for (auto rule : {segmentation::OverlapRule::Nearer, segmentation::OverlapRule::ClosestDepth}) {
-    segmentation::DepthThresholdParams p;
+    auto p = segmentation::methodParams();
     p.overlap_rule = rule;
     const auto masks = DepthThresholdSegmenter(p).segment(depth, boxes);
     ASSERT_TRUE(masks[0].valid && masks[1].valid);
@@ -147,7 +148,7 @@ TEST(SegmentationMutualOcclusion, ConnectedFollowsEachSurfaceIntoTheOverlap) {
                                               person({120, 30, 150, 200})};
   for (auto rule :
        {segmentation::OverlapRule::ClosestDepth, segmentation::OverlapRule::Connected}) {
-    segmentation::DepthThresholdParams p;
+    auto p = segmentation::methodParams();
     p.overlap_rule = rule;
     const auto masks = DepthThresholdSegmenter(p).segment(depth, boxes);
     ASSERT_TRUE(masks[0].valid && masks[1].valid);

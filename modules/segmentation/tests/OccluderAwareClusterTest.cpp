@@ -22,7 +22,7 @@ core::Detection person(const cv::Rect& box) {
 }
 
 DepthThresholdSegmenter segmenter(ObjectCluster c) {
-  DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = c;
   return DepthThresholdSegmenter(p);
 }
@@ -75,7 +75,7 @@ TEST(OccluderAwareCluster, AnExpectedDepthFarFromBothClustersFindsItsOwnSurface)
   depth(cv::Rect(100, 60, 8, 160)).setTo(5.0f);
   const auto without = segmenter(ObjectCluster::OccluderAware).segment(depth, {person(box)}, {2.2});
   EXPECT_NEAR(without[0].d_t, 1.2, 0.01) << "the cluster nearer 2.2 m in ratio: the occluder";
-  DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = ObjectCluster::OccluderAware;
   p.expected_depth_band = 0.1;
   const auto with = DepthThresholdSegmenter(p).segment(depth, {person(box)}, {2.2});
@@ -102,7 +102,7 @@ TakenSurface segmentTakenSurface(const cv::Rect& a, const cv::Rect& b, const cv:
   cv::Mat depth(240, 320, CV_32FC1, cv::Scalar(5.0f));
   depth(a).setTo(1.2f);
   depth(bShows).setTo(2.4f);
-  DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = ObjectCluster::OccluderAware;
   p.overlap_rule = segmentation::OverlapRule::Connected;
   p.max_height_person = maxHeight;
@@ -144,7 +144,7 @@ TEST(OccluderAwareCluster, AMaskLeftOnTheFlankOfTheBodyInFrontIsCutBehindIt) {
   depth(a).setTo(1.2f);
   depth(cv::Rect(156, 20, 4, 200)).setTo(1.38f);
   depth(cv::Rect(160, 20, 30, 200)).setTo(2.4f);
-  DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = ObjectCluster::OccluderAware;
   p.overlap_rule = segmentation::OverlapRule::Connected;
   p.object_depth = segmentation::ObjectDepth::MaskMedian;
@@ -317,7 +317,7 @@ TEST(OccluderAwareCluster, TwoPeopleHidingAPersonTogetherAreItsOccludersWithJoin
       c{{120, 30, 100, 210}, 120, 220, 2.4f};
   const cv::Mat depth = peopleCutOffAtTheBottom({c, a, b});
   const std::vector<core::Detection> boxes = {person(a.box), person(b.box), person(c.box)};
-  DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = ObjectCluster::OccluderAware;
   const auto without = DepthThresholdSegmenter(p).segment(depth, boxes);
   ASSERT_EQ(without.size(), 3u);
@@ -339,7 +339,7 @@ TEST(OccluderAwareCluster, JointOccludersDoNotHideAPersonStandingBetweenThemAtTh
       c{{100, 0, 120, 240}, 120, 220, 1.5f};
   cv::Mat depth = peopleCutOffAtTheBottom({a, b, c});
   depth(cv::Rect(165, 150, 10, 90)).setTo(6.0f);  // between C's legs
-  DepthThresholdParams p;
+  auto p = segmentation::methodParams();
   p.object_cluster = ObjectCluster::OccluderAware;
   p.joint_occluders = true;
   const auto masks =

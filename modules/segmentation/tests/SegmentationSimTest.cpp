@@ -39,7 +39,7 @@ sim::ScenarioOptions quarterResolution(const std::string& ini) {
 TEST(SegmentationSim, OnceTheDepthIsRightTheMaskFollowsThePerson) {
   const std::string ini = dynslam::testing::sourceDir() + "/params/sim/indoor_people_high.ini";
   const sim::Simulator simulator(quarterResolution(ini));
-  const segmentation::DepthThresholdSegmenter segmenter;
+  const segmentation::DepthThresholdSegmenter segmenter(segmentation::methodParams());
 
   std::vector<double> iouRightDepth, mildErr;
   int scored = 0;

@@ -13,19 +13,18 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   segmentation::registerStages(registry);
   auto stage = registry.create("Segmentation");
   stage->configure(core::IniConfig::fromText("[Segmentation]\nm = 36\nn = 25\ne_person = 0.4\n"
-                                             "e_car = 2.5\ne_other_rigid = 2\n"
-                                             "e_other_nonrigid = 0.3\nmin_valid_fraction = 0.5\n"
+                                             "e_car = 2.5\nmin_valid_fraction = 0.5\n"
                                              "max_height_person = 2.2\nexpected_depth_band = 0.1\n"
                                              "retry_taken_surface = true\n"
-                                             "joint_occluders = true\n"),
+                                             "joint_occluders = true\n"
+                                             "object_cluster = occluder_aware\n"
+                                             "boxes = tracked_detections\n"),
                    "Segmentation");
   const auto& p = dynamic_cast<segmentation::SegmentationStage&>(*stage).options().params;
   EXPECT_EQ(p.m, 36);
   EXPECT_EQ(p.n, 25);
   EXPECT_EQ(p.e_person, 0.4);
   EXPECT_EQ(p.e_car, 2.5);
-  EXPECT_EQ(p.e_other_rigid, 2.0);
-  EXPECT_EQ(p.e_other_nonrigid, 0.3);
   EXPECT_EQ(p.min_valid_fraction, 0.5);
   EXPECT_EQ(p.max_height_person, 2.2);
   EXPECT_EQ(p.expected_depth_band, 0.1);
@@ -33,26 +32,32 @@ TEST(SegmentationStage, IsRegisteredAndReadsItsKeys) {
   EXPECT_TRUE(p.joint_occluders);
 }
 
-TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) {
+TEST(SegmentationStage, DefaultsAreTheShippedOnesAndBadKeysOrValuesAreConfigErrors) {
   segmentation::SegmentationStage stage;
   stage.configure(core::IniConfig::fromText(""), "Segmentation");
-  EXPECT_EQ(stage.options().params.m, 64);
-  EXPECT_EQ(stage.options().params.n, 64);
-  EXPECT_EQ(stage.options().params.e_person, 0.5);
-  EXPECT_EQ(stage.options().params.e_car, 3.0);
-  EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Far);
-  EXPECT_EQ(stage.options().params.max_height_person, 0.0) << "no size bound unless asked";
+  const auto& p = stage.options().params;
+  EXPECT_EQ(p.m, 64);
+  EXPECT_EQ(p.n, 64);
+  EXPECT_EQ(p.e_person, 0.5);
+  EXPECT_EQ(p.e_car, 3.0);
+  // params/sim_vio.ini's [Segmentation], not the method (methodParams()).
+  EXPECT_EQ(p.object_cluster, segmentation::ObjectCluster::OccluderAware);
+  EXPECT_EQ(p.overlap_rule, segmentation::OverlapRule::Connected);
+  EXPECT_EQ(p.object_depth, segmentation::ObjectDepth::MaskMedian);
+  EXPECT_EQ(p.max_height_person, 2.2);
+  EXPECT_TRUE(p.joint_occluders);
+  EXPECT_FALSE(p.retry_taken_surface) << "a per-instance setting";
+  EXPECT_EQ(p.expected_depth_band, 0.0) << "a per-instance setting";
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\ne_pedestrian = 1\n"), "S"),
                core::ConfigError);
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = near\n"), "S"),
                core::ConfigError)
       << "names the section and the file";
-  stage.configure(core::IniConfig::fromText("[S]\nobject_cluster = larger\n"), "S");
+  stage.configure(
+      core::IniConfig::fromText("[S]\nobject_cluster = larger\njoint_occluders = false\n"), "S");
   EXPECT_EQ(stage.options().params.object_cluster, segmentation::ObjectCluster::Larger);
-  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::ClusterMean)
-      << "the method's d_t unless asked";
-  stage.configure(core::IniConfig::fromText("[S]\nobject_depth = mask_median\n"), "S");
-  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::MaskMedian);
+  stage.configure(core::IniConfig::fromText("[S]\nobject_depth = cluster_mean\n"), "S");
+  EXPECT_EQ(stage.options().params.object_depth, segmentation::ObjectDepth::ClusterMean);
   EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nobject_depth = mean\n"), "S"),
                core::ConfigError);
   try {
@@ -62,8 +67,40 @@ TEST(SegmentationStage, DefaultsAreTheMethodsAndBadKeysOrValuesAreConfigErrors) 
     EXPECT_NE(std::string(e.what()).find("m = 1"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("x.ini"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(stage.configure(core::IniConfig::fromText("[S]\nmax_height_person = -2\n"), "S"),
-               core::ConfigError);
+  for (const char* bad : {"max_height_person = -2", "e_car = 0", "min_valid_fraction = 1.5",
+                          "min_valid_fraction = 0", "n = 0", "m = 2.5", "e_person = 0.5 m"})
+    EXPECT_THROW(stage.configure(core::IniConfig::fromText(std::string("[S]\n") + bad), "S"),
+                 core::ConfigError)
+        << bad;
+}
+
+// A setting that acts only through another is refused alone, naming both keys; with the other
+// it is taken. joint_occluders is on by default, so the method's far cluster turns it off.
+TEST(SegmentationStage, SettingsThatActOnlyThroughAnotherAreRefusedAlone) {
+  struct Case {
+    const char *setting, *without, *needed;
+  };
+  const Case cases[] = {
+      {"retry_taken_surface = true", "object_cluster = far\njoint_occluders = false",
+       "object_cluster = occluder_aware"},
+      {"joint_occluders = true", "object_cluster = far", "object_cluster = occluder_aware"},
+      {"expected_depth_band = 0.1", "boxes = detections", "boxes = tracked_detections"},
+      {"max_track_misses = 3", "boxes = detections", "boxes = predicted_tracks"}};
+  for (const auto& c : cases) {
+    segmentation::SegmentationStage stage;
+    const std::string setting = c.setting;
+    try {
+      stage.configure(
+          core::IniConfig::fromText("[S]\n" + setting + "\n" + c.without + "\n", "s.ini"), "S");
+      FAIL() << setting << " accepted with " << c.without;
+    } catch (const core::ConfigError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(setting.substr(0, setting.find(' '))), std::string::npos) << what;
+      EXPECT_NE(what.find(c.needed), std::string::npos) << what;
+      EXPECT_NE(what.find("s.ini"), std::string::npos) << what;
+    }
+    stage.configure(core::IniConfig::fromText("[S]\n" + setting + "\n" + c.needed + "\n"), "S");
+  }
 }
 
 TEST(SegmentationStage, WritesOneMaskPerDetectionInOrder) {

@@ -5,26 +5,30 @@
 #include <dynslam/detection/HogPeopleDetector.h>
 #include <dynslam/detection/OnnxYoloDetector.h>
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <dynslam/core/Options.h>
 
 #include <string>
+#include <vector>
 
 namespace dynslam::detection {
 
-struct DetectionOptions : mrpt::config::CLoadableOptions {
-  std::string detector = "onnx_yolo";  ///< onnx_yolo | hog | ground_truth
-  std::string mode = "deterministic";  ///< deterministic | realtime
-  std::string class_map;               ///< ClassMap.h's ini form; set to ClassMap()'s default
+/// [Detection]: every key, its range and meaning in describe() (DetectionOptions.cpp);
+/// docs/parameters.md. describe() lists `detector` first, then the keys of the detector it
+/// names only.
+struct DetectionOptions : core::Options {
+  /// The words of `detector`; each names one of the settings structs below.
+  static const std::vector<std::string> kDetectors;
+
+  std::string detector = "onnx_yolo";
+  std::string mode = "deterministic";
+  std::string class_map;  ///< ClassMap()'s default, set by the constructor
   OnnxYoloDetectorSettings onnx_yolo;
   HogPeopleDetectorSettings hog;
   GroundTruthDetectorSettings ground_truth;
 
   DetectionOptions();
 
-  /// Reads `detector` and then the keys of that detector only.
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  /// Writes the common keys and those of the detector `detector` names.
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 }  // namespace dynslam::detection

@@ -13,16 +13,18 @@
 
 namespace dynslam::detection {
 
+/// Keys, ranges, meanings: DetectionOptions::describe() in DetectionOptions.cpp;
+/// docs/parameters.md.
 struct GroundTruthDetectorSettings {
-  std::string objects;               ///< path of dynslam-sim's objects.txt
-  double miss_rate = 0.0;            ///< probability that a reportable object is not reported
-  double jitter_px = 0.0;            ///< sigma of the Gaussian noise on each box edge, pixels
-  double false_positive_rate = 0.0;  ///< mean number of boxes on nothing per frame (Poisson)
-  /// Objects with less of themselves visible are not reported, as a real detector misses them
-  /// (an object with no visible pixel is never reported, whatever this says).
+  std::string objects;
+  double miss_rate = 0.0;
+  double jitter_px = 0.0;
+  double false_positive_rate = 0.0;
+  /// An object with no visible pixel is never reported, whatever this says.
   double min_visible_fraction = 0.2;
-  std::uint32_t seed = 1;
+  int seed = 1;
   /// s; how far a frame's stamp may be from the file's (MRPT stores stamps in 100 ns ticks).
+  /// Not an ini key.
   double time_tolerance = 1e-3;
 };
 

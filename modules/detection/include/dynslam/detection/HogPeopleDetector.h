@@ -9,20 +9,21 @@
 
 namespace dynslam::detection {
 
+/// Keys, ranges, meanings: DetectionOptions::describe() in DetectionOptions.cpp;
+/// docs/parameters.md. win_stride must be a multiple of the 8-pixel cell (the constructor
+/// checks). Below 128, min_height finds smaller people, slower (the image is resized by
+/// 128 / min_height: the window is 128 high); above it, runs faster on large people only.
 struct HogPeopleDetectorSettings {
-  double scale = 1.05;         ///< step between pyramid levels (> 1; larger: faster, coarser)
-  double hit_threshold = 0.0;  ///< minimum SVM margin of a window
-  int win_stride = 8;          ///< pixels between windows (a multiple of the 8-pixel cell)
-  /// Smallest person height to find, pixels: the image is resized by 128 / min_height before
-  /// detection (the window is 128 high), so below 128 it finds smaller people, slower, and
-  /// above it runs faster on large people only.
+  double scale = 1.05;
+  double hit_threshold = 0.0;
+  int win_stride = 8;
   int min_height = 128;
-  double nms_iou = 0.45;  ///< overlapping windows with a higher IoU than this are merged (NMS)
+  double nms_iou = 0.45;
 };
 
 class HogPeopleDetector : public Detector {
  public:
-  /// Throws DetectorError for settings out of range.
+  /// Throws DetectorError for a win_stride that is not a positive multiple of 8.
   HogPeopleDetector(HogPeopleDetectorSettings settings, ClassMap class_map);
 
   /// Boxes are the windows shrunk to the person inside them (OpenCV's peopledetect sample does

@@ -13,24 +13,25 @@
 
 namespace dynslam::detection {
 
+/// Keys, ranges, meanings: DetectionOptions::describe() in DetectionOptions.cpp;
+/// docs/parameters.md. input_size must be a multiple of 32, the coarsest stride (the
+/// constructor checks); threads is process-wide (cv::setNumThreads). trim_padding runs 416 x
+/// 320 rather than 416 x 416 for a 4:3 image (Letterbox::apply): the same detections for three
+/// quarters of the work; a model exported with a fixed square input shape cannot take it.
 struct OnnxYoloDetectorSettings {
-  std::string model = "../shared/models/yolox_nano.onnx";  ///< ONNX file
+  std::string model = "../shared/models/yolox_nano.onnx";
   YoloLayout layout = YoloLayout::YoloX;
-  int input_size = 416;      ///< network input, pixels (a multiple of 32): the image's longer side
-  double confidence = 0.35;  ///< minimum score (objectness x class score, or class score)
-  double nms_iou = 0.45;     ///< boxes of one category overlapping more than this are merged
-  /// OpenCV threads (cv::setNumThreads, which is process-wide); 0 leaves OpenCV's default.
+  int input_size = 416;
+  double confidence = 0.35;
+  double nms_iou = 0.45;
   int threads = 0;
-  /// Drop the letterbox's grey rows (Letterbox::apply): 416 x 320 rather than 416 x 416 for a
-  /// 4:3 image, the same detections for three quarters of the work. A model exported with a
-  /// fixed square input shape cannot take it: then false.
   bool trim_padding = true;
 };
 
 class OnnxYoloDetector : public Detector {
  public:
   /// Loads the model; throws DetectorError naming the path when it is missing or unreadable,
-  /// or when the settings are out of range.
+  /// or when input_size is not a positive multiple of 32.
   OnnxYoloDetector(OnnxYoloDetectorSettings settings, ClassMap class_map);
 
   /// Throws DetectorError for a frame without colour, or when the network's output does not fit

@@ -23,9 +23,6 @@ namespace dynslam::detection {
 
 enum class YoloLayout { YoloX, YoloV5, YoloV8 };
 
-/// Parses "yolox", "yolov5" or "yolov8"; throws std::invalid_argument otherwise.
-YoloLayout parseYoloLayout(const std::string& name);
-
 /// Resizing an image, aspect kept, into the top-left of the network input padded with grey 114.
 struct Letterbox {
   double scale = 1;  ///< input pixels per image pixel

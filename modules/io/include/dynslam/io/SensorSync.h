@@ -6,8 +6,8 @@
 // the frame's own time are never lost to file order.
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Frame.h>
+#include <dynslam/core/Options.h>
 
-#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/obs/CObservation.h>
 
 #include <deque>
@@ -17,6 +17,12 @@
 #include <string>
 #include <vector>
 
+namespace mrpt::obs {
+class CObservation3DRangeScan;
+class CObservationIMU;
+class CObservationGPS;
+}  // namespace mrpt::obs
+
 namespace dynslam::io {
 
 /// Bad stream order (a sensor's time going backwards, a sample arriving after the frame it
@@ -25,22 +31,22 @@ struct SyncError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct SensorSyncOptions : mrpt::config::CLoadableOptions {
-  std::string camera_label;                ///< sensorLabel of the RGB-D camera; "" takes any
-  std::string imu_label;                   ///< sensorLabel of the IMU; "" takes any
-  std::string gnss_label;                  ///< sensorLabel of the GNSS receiver; "" takes any
-  bool skip_frames_without_depth = false;  ///< false: a frame with no depth is an error
-  int min_gnss_fix_quality = 1;            ///< GGA fixes below this quality are dropped
+/// [SensorSync]: every key, its range and meaning in describe() (SensorSync.cpp);
+/// docs/parameters.md.
+struct SensorSyncOptions : core::Options {
+  std::string camera_label;
+  std::string imu_label;
+  std::string gnss_label;
+  bool skip_frames_without_depth = false;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 /// What the stream held, for the run summary.
 struct SyncCounts {
   size_t observations = 0;
   size_t rgbd = 0, imu = 0, gnss = 0;
-  size_t gnss_dropped = 0;  ///< no GGA, or quality below min_gnss_fix_quality
+  size_t gnss_dropped = 0;  ///< no GGA, or GGA quality 0 (no fix)
   size_t other = 0;         ///< observation types or labels the pipeline does not use
   size_t frames = 0;
   size_t frames_without_depth = 0;
@@ -66,6 +72,11 @@ class SensorSync {
   void emitUpTo(double t, std::vector<core::Frame>& out);
   void emit(core::Frame& frame, std::vector<core::Frame>& out);
   void checkOrder(const mrpt::obs::CObservation& obs, double t, bool strictly_increasing);
+  /// A sample at `t` (IMU, GNSS) must come before the frame it belongs to was handed out.
+  void checkNotLate(const char* what, double t) const;
+  void takeRgbd(const mrpt::obs::CObservation3DRangeScan& scan);
+  void takeImu(const mrpt::obs::CObservationIMU& imu);
+  void takeGnss(const mrpt::obs::CObservationGPS& gps);
 
   SensorSyncOptions options_;
   SyncCounts counts_;

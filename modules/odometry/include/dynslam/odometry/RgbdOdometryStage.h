@@ -5,25 +5,24 @@
 // runs until the factor-graph estimator exists.
 #include <dynslam/core/Stage.h>
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <dynslam/core/Options.h>
 
 #include <memory>
 
 namespace dynslam::odometry {
 
-struct RgbdOdometryOptions : mrpt::config::CLoadableOptions {
-  std::string method = "rgbd_icp";      ///< rgbd_icp | rgbd | icp
-  double min_depth = 0.3;               ///< m; nearer pixels are not used
-  double max_depth = 4.0;               ///< m; farther pixels are not used
-  double max_depth_diff = 0.07;         ///< m; correspondences differing more are rejected
-  double max_points_part = 0.07;        ///< fraction of pixels sampled per iteration
-  double keyframe_translation = 0.10;   ///< m from the keyframe that starts a new one
-  double keyframe_rotation_deg = 10.0;  ///< degrees from the keyframe that start a new one
-  double max_translation = 0.5;         ///< m; larger estimated motions count as failures
-  double max_rotation_deg = 30.0;       ///< degrees; larger estimated motions count as failures
+/// [RgbdOdometry]: every key, its range and meaning in describe() (RgbdOdometryStage.cpp);
+/// docs/parameters.md.
+struct RgbdOdometryOptions : core::Options {
+  std::string method = "rgbd_icp";
+  double min_depth = 0.3;
+  double max_depth = 4.0;
+  double keyframe_translation = 0.10;
+  double keyframe_rotation_deg = 10.0;
+  double max_translation = 0.5;
+  double max_rotation_deg = 30.0;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 class RgbdOdometryStage : public core::Stage {

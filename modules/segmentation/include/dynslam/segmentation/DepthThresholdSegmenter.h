@@ -4,7 +4,10 @@
 // samples in the box's central half, the background depth d_b from the upper half of the box,
 // thresholds T_min / T_max between them, and the mask = pixels of the box with depth in
 // [T_min, T_max]. Overlapping boxes are segmented each with their own thresholds; a pixel
-// both claim goes to the nearer object (mutual occlusion). MRPT-free; the stage wraps it.
+// both claim goes to one of them (mutual occlusion; the method: the nearer). Which cluster is
+// the object, which object takes a shared pixel and what d_t reports have variants besides the
+// method's (the enums below); the defaults are the shipped ones, methodParams() the method's.
+// MRPT-free; the stage wraps it.
 #include <dynslam/core/Perception.h>
 #include <dynslam/segmentation/TwoMeans.h>
 
@@ -17,8 +20,8 @@ namespace dynslam::segmentation {
 /// Which 2-means cluster of the candidate box's depths is the object (step 3).
 enum class ObjectCluster {
   Far,     ///< method.md: the far cluster (the near one is an occluder)
-  Larger,  ///< the cluster with more samples (the far one on a tie); NOT the method: a variant
-           ///< that bench-segmentation compares, for boxes whose centre shows background
+  Larger,  ///< the cluster with more samples (the far one on a tie); not the method: for boxes
+           ///< whose centre shows background
   /// NOT the method: when the two clusters are more than e apart, the near one is an occluder
   /// only if another detection claims it (its box overlaps the candidate box, its bottom edge
   /// is lower in the image, i.e. it stands nearer on the floor, and one of its own clusters is
@@ -33,17 +36,15 @@ enum class OverlapRule {
   /// NOT the method: the object whose d_t is closest to the pixel's depth (the nearer one on a
   /// tie). With e = 0.5 m the near person's range [T_min, T_max] often holds a person walking
   /// less than e behind; "nearer" then gives the near person all of the other's pixels in
-  /// the overlap. indoor_people_high (occluder_aware): mask IoU 0.703 -> 0.734.
+  /// the overlap. Measured gain: docs/notes/perception.md, 2026-11-28 (overlap_rule).
   ClosestDepth,
   /// NOT the method: a shared pixel goes to the object whose surface reaches it, searching
   /// breadth-first from each mask's own pixels across neighbours less than 5 cm apart in depth
   /// (resolveByConnectivity); pixels no surface reaches fall back to closest_depth. A person's
   /// body slants and bends (turned shoulders, swinging arms, a leg stepping back), so its
   /// pixels are often nearer another person's d_t than its own; a surface is continuous where
-  /// two people are not. indoor_people_high (occluder_aware, every person): mask IoU 0.775 ->
-  /// 0.831 against closest_depth, the pixels lost to another object 18 % -> 8 % of the visible
-  /// ones; 0.9-1.3 ms per frame against 0.38 for closest_depth and 0.31 for nearer
-  /// (bench-segmentation --min-visible 0, 2026-11-23).
+  /// two people are not. Measured gain and cost: docs/notes/perception.md, 2026-11-28
+  /// (overlap_rule).
   Connected
 };
 
@@ -53,59 +54,36 @@ enum class ObjectDepth {
   /// NOT the method: the median depth of the object's final mask (after step 9), or the
   /// cluster mean when the mask is empty. The cluster mean is the mean of 10-40 grid samples
   /// of the candidate box, which catch the floor, an arm swung forward or a neighbour's edge;
-  /// the mask holds the whole visible surface. indoor_people_high (shipped segmentation,
-  /// seed 1): mean d_t error, unoccluded 5.61 -> 2.17 %, mild occlusion 4.65 -> 2.28 %,
-  /// severe 16.02 -> 11.70 % (bench-segmentation, 2026-11-24).
+  /// the mask holds the whole visible surface. Measured gain: docs/notes/perception.md,
+  /// 2026-11-28 (object_depth).
   MaskMedian
 };
 
-/// The method's parameters (defaults: method.md section 1). Read from the ini by
-/// SegmentationOptions, which documents each key.
+/// The segmenter's settings; the defaults are the shipped, best-measured ones (those of
+/// params/sim_vio.ini's [Segmentation]), methodParams() the method as method.md states it.
+/// Keys, ranges, meanings: SegmentationOptions::describe() in SegmentationStage.cpp;
+/// docs/parameters.md.
 struct DepthThresholdParams {
-  int m = 64;                        ///< depth samples on the grid over the candidate box M
-  int n = 64;                        ///< depth samples on the grid over the upper half of the box
-  double e_person = 0.5;             ///< m; depth margin e for category "person"
-  double e_car = 3.0;                ///< m; depth margin e for category "car"
-  double e_other_nonrigid = 0.5;     ///< m; e for any other category with a non-rigid model
-  double e_other_rigid = 3.0;        ///< m; e for any other category with a rigid model
-  double min_valid_fraction = 0.25;  ///< of the m samples that must have depth, else not valid
-  /// NOT the method (0 = off): the tallest a person can be, m. A box h pixels tall holds
-  /// nothing of a person beyond max_height_person * fy / h (a taller person, or one farther
-  /// away, would have a smaller box), so the candidate samples beyond that depth are
-  /// background seen past the person and take no part in the 2-means, and the mask stops
-  /// there. A box cut by an occluder or the image's edge is smaller than the person: the bound
-  /// only loosens. People only: a car seen along its length reaches far beyond its nearest
-  /// point, which is what its box height measures (outdoor_street_high, 2.5 m for cars: car
-  /// mask recall 0.786 -> 0.584). Needs the camera's fy (segment()'s argument).
-  double max_height_person = 0;
-  /// NOT the method; only where segment() gets an expected depth (a track's). When neither
-  /// cluster lies within 15 % of it, the candidate samples within this fraction of it (at
-  /// least 3) are the object's cluster: a partly hidden person's own surface is then a third
-  /// depth between an occluder and the wall, or behind two occluders, that 2-means merged into
-  /// another cluster. 0 = off (the nearer cluster in ratio, whatever its distance).
+  int m = 64;
+  int n = 64;
+  double e_person = 0.5;  ///< m
+  double e_car = 3.0;     ///< m
+  double min_valid_fraction = 0.25;
+  double max_height_person = 2.2;  ///< m; 0 = off
   double expected_depth_band = 0;
-  /// NOT the method; with object_cluster = occluder_aware. A mask that the overlap step (step 9)
-  /// leaves empty, or with under a fifth of its pixels while another overlapping mask's d_t is
-  /// within 10 % of its own or nearer by less than e / 2 (its own d_t then lies on the flank of
-  /// the body in front), was cut on another object's surface (a partly hidden person given
-  /// its occluder's depth); two detections are not one surface, so it is cut again on what its
-  /// whole box shows more than e / 2 behind that surface and not beyond max_height_person's
-  /// depth (2-means: the nearer cluster when more than e apart, else all), that surface being
-  /// its occluder; with fewer than 4 such grid points an empty mask takes its other cluster
-  /// (when more than e away). Step 9 then runs again.
   bool retry_taken_surface = false;
-  /// NOT the method; with object_cluster = occluder_aware. When no single detection at the
-  /// near cluster's depth passes as the occluder, those of them together (their boxes' union)
-  /// are tested the same way: a person between two nearer people, each covering part of its
-  /// box, otherwise takes their surface as its own.
-  bool joint_occluders = false;
-  ObjectCluster object_cluster = ObjectCluster::Far;
-  OverlapRule overlap_rule = OverlapRule::Nearer;
-  ObjectDepth object_depth = ObjectDepth::ClusterMean;
-
-  /// Throws std::invalid_argument naming the first field out of range.
-  void validate() const;
+  bool joint_occluders = true;
+  ObjectCluster object_cluster = ObjectCluster::OccluderAware;
+  OverlapRule overlap_rule = OverlapRule::Connected;
+  ObjectDepth object_depth = ObjectDepth::MaskMedian;
 };
+
+/// method.md section 1 as written: the far cluster is the object, the nearer object takes a
+/// shared pixel, d_t is the cluster's mean, no size bound and no joint occluders.
+DepthThresholdParams methodParams();
+
+struct BoxClusters;    // src/ClusterChoice.h
+struct ClusterChoice;  // src/ClusterChoice.h
 
 class DepthThresholdSegmenter {
  public:
@@ -113,11 +91,19 @@ class DepthThresholdSegmenter {
 
   const DepthThresholdParams& params() const { return params_; }
 
-  /// The margin e used for a detection: by category, else by its motion model.
+  /// The margin e used for a detection: e_person for people and other non-rigid classes,
+  /// e_car for cars and other rigid classes.
   double marginFor(const core::Detection& detection) const;
 
   /// The farthest the detection's object can be by max_height_person and the box's height;
-  /// infinity when that is off, for other categories than person, or with fy <= 0.
+  /// infinity when that is off, for other categories than person, or with fy <= 0. A box h
+  /// pixels tall holds nothing of a person beyond max_height_person * fy / h (a taller person,
+  /// or one farther away, would have a smaller box), so candidate samples beyond that depth are
+  /// background seen past the person: they take no part in the 2-means, and the mask stops
+  /// there. A box cut by an occluder or the image's edge is smaller than the person: the bound
+  /// only loosens. People only: a car seen along its length reaches far beyond its nearest
+  /// point, which is what its box height measures (measured: docs/notes/perception.md,
+  /// 2026-11-28, max_height_person).
   double maxDepthFor(const core::Detection& detection, double fy) const;
 
   /// Steps 1-8 for one box, without mutual occlusion. `depth`: CV_32FC1 metres, 0 = invalid
@@ -150,9 +136,21 @@ class DepthThresholdSegmenter {
                                int detectionIndex, const TwoMeansResult& clusters,
                                bool objectIsNear, double maxDepth) const;
 
+  /// OccluderAware, steps 1-3 for every box (their margins and max_height_person's bounds too).
+  std::vector<BoxClusters> clusterBoxes(const cv::Mat& depth,
+                                        const std::vector<core::Detection>& detections,
+                                        double fy) const;
   /// Step 9 by params_.overlap_rule; then, with object_depth = mask_median, each d_t from its
   /// final mask.
   void resolveOverlaps(std::vector<core::ObjectMask>& masks, const cv::Mat& depth) const;
+  /// retry_taken_surface: step 9; then each mask the step left without its surface
+  /// (takenSurface) is cut again behind the surface it was cut on (clustersBehind; with nothing
+  /// there, an empty mask takes its other cluster when more than e away), and step 9 runs again.
+  /// `chosen`: the clusters each mask of `masks` was cut on.
+  void retryTakenSurfaces(const cv::Mat& depth, const std::vector<core::Detection>& detections,
+                          const std::vector<BoxClusters>& boxes,
+                          const std::vector<ClusterChoice>& chosen,
+                          std::vector<core::ObjectMask>& masks) const;
 
   DepthThresholdParams params_;
 };

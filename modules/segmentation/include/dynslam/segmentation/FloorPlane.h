@@ -2,8 +2,8 @@
 // The floor under the objects, fitted to the depth image (not the method). A person's box
 // reaches down to the floor at its feet, where the floor has the person's depth, so the
 // depth-threshold mask (method.md section 1) takes a band of floor; corners on that floor are
-// then classified with the walker and lost as static constraints (outdoor_street_high: half of
-// the background features wrongly classified dynamic lie within 5 cm of the ground).
+// then classified with the walker and lost as static constraints (how many: docs/notes/
+// perception.md, 2026-11-28).
 #include <dynslam/core/Frame.h>
 
 #include <Eigen/Core>
@@ -14,14 +14,16 @@
 
 namespace dynslam::segmentation {
 
+/// The fit's settings. Keys, ranges, meanings: FloorRemovalOptions::describe() in
+/// FloorRemovalStage.cpp; docs/parameters.md.
 struct FloorPlaneParams {
-  int sample_stride_px = 8;        ///< depth samples on a grid of this pitch, outside the boxes
-  int iterations = 100;            ///< RANSAC hypotheses (three samples each)
-  double inlier_m = 0.02;          ///< m; plus 2 sigma of depth noise at the sample's depth
-  double depth_sigma_z2 = 0.0015;  ///< depth noise sigma(z) = depth_sigma_z2 z^2 (1/m)
-  double max_depth_m = 8;          ///< samples farther than this are too noisy to fit
-  double max_tilt_deg = 10;        ///< angle between the plane's normal and "up" (see below)
-  int min_inliers = 150;           ///< fewer: no floor in view
+  int sample_stride_px = 8;
+  int iterations = 100;
+  double inlier_m = 0.02;
+  double depth_sigma_z2 = 0.0015;
+  double max_depth_m = 8;
+  double max_tilt_deg = 10;
+  int min_inliers = 150;
 };
 
 /// A plane n . P + c = 0 in camera coordinates (metres), n a unit normal pointing to the side

@@ -1,28 +1,31 @@
 #pragma once
-// Takes the floor out of every object mask (not the method; ini section [FloorRemoval], keys
-// in FloorRemovalOptions). Fits the floor plane to the depth outside the masks' boxes
-// (FloorPlane.h) and clears each mask pixel less than `margin_m` + `margin_sigmas` sigma(z)
-// above it. List it after the last segmentation stage and before FeatureTracking:
-//   stages = Detection Segmentation Tracking ... Segmentation:PredictedBoxes FloorRemoval
-//            FeatureTracking DynamicClassification
-// The masks' depths (d_t, d_o, d_b) stay as the segmentation measured them: only which pixels
-// belong to the object changes. A frame without a floor in view keeps its masks.
+// Takes the floor out of every object mask (not the method; ini section [FloorRemoval], keys:
+// FloorRemovalOptions::describe()). Fits the floor plane to the depth outside the masks' boxes
+// (FloorPlane.h) and clears each mask pixel less than `margin_m` above it. The shipped pipelines
+// list it after FeatureTracking, whose fundamental-matrix RANSAC and residual gate work from the
+// segmentation's masks as they were, and before DynamicClassification:
+//   stages = Detection Segmentation Tracking ... Segmentation:PredictedBoxes FeatureTracking
+//            FloorRemoval DynamicClassification
+// (Why after FeatureTracking, and what the stage gains: docs/notes/perception.md, "The
+// `FloorRemoval` entry".) The masks' depths (d_t, d_o, d_b) stay as the segmentation measured
+// them: only which pixels belong to the object changes. A frame without a floor in view keeps
+// its masks.
 #include <dynslam/core/Stage.h>
 #include <dynslam/segmentation/FloorPlane.h>
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <dynslam/core/Options.h>
 
 #include <cstddef>
 
 namespace dynslam::segmentation {
 
-struct FloorRemovalOptions : mrpt::config::CLoadableOptions {
+/// [FloorRemoval]: every key, its range and meaning in describe() (FloorRemovalStage.cpp);
+/// docs/parameters.md.
+struct FloorRemovalOptions : core::Options {
   FloorPlaneParams plane;
-  double margin_m = 0.03;    ///< pixels this close to the floor (or below it) leave the mask
-  double margin_sigmas = 0;  ///< plus this many sigma(z) of depth noise at the pixel
+  double margin_m = 0.03;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 /// Clears the pixels of `mask` (over `roi` of `depth`) within the margin of `floor`; returns

@@ -1,6 +1,7 @@
 #pragma once
 // The pipeline stage of depth-threshold instance segmentation (method.md section 1). Ini
-// section: [Segmentation] (keys in SegmentationOptions). Two uses, chosen by `boxes`:
+// section: [Segmentation] (keys: SegmentationOptions::describe()). Three uses, chosen by
+// `boxes`:
 //  - detections (default): one core::ObjectMask per core::Detection of the frame, in the same
 //    order, into Frame::object_masks. Runs after a detector stage, before tracking (the tracker
 //    takes each detection's depth d_t from its mask).
@@ -20,7 +21,7 @@
 #include <dynslam/core/Stage.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 
-#include <mrpt/config/CLoadableOptions.h>
+#include <dynslam/core/Options.h>
 
 #include <cstddef>
 
@@ -29,17 +30,14 @@ namespace dynslam::segmentation {
 /// Which boxes the stage segments (see the file comment).
 enum class SegmentedBoxes { Detections, PredictedTracks, TrackedDetections };
 
-struct SegmentationOptions : mrpt::config::CLoadableOptions {
+/// [Segmentation] (and each other instance's section): every key, its range and meaning in
+/// describe() (SegmentationStage.cpp); docs/parameters.md.
+struct SegmentationOptions : core::Options {
   DepthThresholdParams params;
   SegmentedBoxes boxes = SegmentedBoxes::Detections;
-  /// predicted_tracks: only the tracks that missed at most this many detections in a row are
-  /// segmented (0: every confirmed track; not the method). A track coasting for long predicts a
-  /// box where its object no longer is (a walker who left the image), and its mask takes
-  /// whatever surface lies there.
   int max_track_misses = 0;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  void describe(core::OptionVisitor& v) override;
 };
 
 class SegmentationStage : public core::Stage {
