@@ -29,8 +29,7 @@ void TopicMap::describe(core::OptionVisitor& v) {
         "qw");
   v.key("depth_unit", depth_unit, positive, "metres per unit of a 16-bit depth image");
   v.key("max_depth", max_depth, positive, "maxRange of the RGB-D observations (m)");
-  v.key("rgbd_max_dt", rgbd_max_dt, positive,
-        "largest colour-depth stamp difference paired (s)");
+  v.key("rgbd_max_dt", rgbd_max_dt, positive, "largest colour-depth stamp difference paired (s)");
   v.key("imu_topic", imu_topic, "sensor_msgs/Imu with gyro and accelerometer");
   v.key("accel_topic", accel_topic,
         "sensor_msgs/Imu, accelerometer only (interpolated at gyro_topic's stamps)");
