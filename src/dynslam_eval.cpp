@@ -259,17 +259,14 @@ int runBars(const dynslam::core::CommandLine& cl) {
   return 0;
 }
 
-int run(const Options& o) {
+/// Reads both files and pairs their poses (printing both and the pairing).
+ev::AssociatedTrajectories readAndAssociate(const Options& o, bool by_index) {
   const auto ref_full = dynslam::core::readTrajectory(o.ref_path, o.ref_format);
   const auto est_full = dynslam::core::readTrajectory(o.est_path, o.est_format);
   std::cout << "reference   " << o.ref_path << " (" << formatName(o.ref_format) << ", "
             << ref_full.size() << " poses)\n"
             << "estimate    " << o.est_path << " (" << formatName(o.est_format) << ", "
             << est_full.size() << " poses)\n";
-
-  // KITTI files carry no time, so any pair with one is paired by index (evo's kitti mode).
-  const bool by_index =
-      o.ref_format == TrajectoryFormat::Kitti || o.est_format == TrajectoryFormat::Kitti;
   ev::AssociatedTrajectories pairs =
       by_index ? ev::associateByIndex(ref_full, est_full)
                : ev::associateByTime(ref_full, est_full, o.t_max_diff, o.t_offset);
@@ -278,30 +275,33 @@ int run(const Options& o) {
   else
     std::cout << "pairs       " << pairs.first.size() << " of max. " << pairs.max_pairs
               << " (max. time diff " << o.t_max_diff << " s, offset " << o.t_offset << " s)\n";
+  return pairs;
+}
 
-  const dynslam::core::Trajectory& ref = pairs.first;
-  dynslam::core::Trajectory& est = pairs.second;
-  printAlignment(ev::alignTrajectory(ref, est, o.align, o.align_origin));
+/// The errors (APE per pose or RPE per pair) and when each occurs, in s since EST's first pose.
+struct PoseErrors {
+  std::vector<double> errors, times;
+};
 
-  std::vector<double> errors, error_times;
+PoseErrors computeErrors(const Options& o, const dynslam::core::Trajectory& ref,
+                         const dynslam::core::Trajectory& est) {
+  PoseErrors e;
   const double t0 = est.front().t;
   if (o.command == "ape") {
-    errors = ev::computeApe(ref, est, o.relation);
-    for (const auto& p : est) error_times.push_back(p.t - t0);
-  } else {
-    const ev::RpeResult rpe = ev::computeRpe(ref, est, o.rpe);
-    errors = rpe.errors;
-    for (const auto& [i, j] : rpe.pairs) error_times.push_back(est[j].t - t0);
-    std::cout << "rpe pairs   " << rpe.pairs.size() << " (delta " << o.rpe.delta
-              << (o.rpe.delta_unit == ev::DeltaUnit::Frames ? " frames" : " m")
-              << (o.rpe.all_pairs ? ", all pairs" : ", consecutive pairs") << ")\n";
+    e.errors = ev::computeApe(ref, est, o.relation);
+    for (const auto& p : est) e.times.push_back(p.t - t0);
+    return e;
   }
-  const std::string unit = ev::unitOf(o.relation);
-  const std::string metric = o.command == "ape" ? "APE" : "RPE";
-  std::cout << metric << " w.r.t. " << ev::describe(o.relation)
-            << (unit.empty() ? "" : " (" + unit + ")") << '\n';
+  const ev::RpeResult rpe = ev::computeRpe(ref, est, o.rpe);
+  e.errors = rpe.errors;
+  for (const auto& [i, j] : rpe.pairs) e.times.push_back(est[j].t - t0);
+  std::cout << "rpe pairs   " << rpe.pairs.size() << " (delta " << o.rpe.delta
+            << (o.rpe.delta_unit == ev::DeltaUnit::Frames ? " frames" : " m")
+            << (o.rpe.all_pairs ? ", all pairs" : ", consecutive pairs") << ")\n";
+  return e;
+}
 
-  const ev::ErrorStatistics s = ev::computeStatistics(errors);
+void printStatistics(const ev::ErrorStatistics& s) {
   const std::pair<const char*, double> rows[] = {
       {"rmse", s.rmse}, {"mean", s.mean}, {"median", s.median}, {"std", s.std},
       {"min", s.min},   {"max", s.max},   {"sse", s.sse}};
@@ -310,21 +310,40 @@ int run(const Options& o) {
     padded.resize(7, ' ');
     std::cout << padded << fullPrecision(value) << '\n';
   }
+}
+
+void writePlot(const Options& o, const ev::AssociatedTrajectories& pairs, const PoseErrors& e,
+               bool by_index) {
+  const std::string unit = ev::unitOf(o.relation);
+  const std::string metric = o.command == "ape" ? "APE" : "RPE";
+  ev::PlotInput plot;
+  plot.title = metric + " w.r.t. " + ev::describe(o.relation) + ", alignment " +
+               ev::toString(o.align) + (o.align_origin ? " + origin" : "") + ": " +
+               o.est_path.substr(o.est_path.find_last_of('/') + 1);
+  plot.reference = pairs.first;
+  plot.estimate = pairs.second;
+  plot.errors = e.errors;
+  plot.error_times = e.times;
+  plot.error_label = metric + (unit.empty() ? "" : " (" + unit + ")");
+  plot.time_label = by_index ? "pose index" : "t - t0 (s)";
+  plot.plane = o.plot_plane;
+  ev::writePlotPng(o.plot_path, plot);
+}
+
+int run(const Options& o) {
+  // KITTI files carry no time, so any pair with one is paired by index (evo's kitti mode).
+  const bool by_index =
+      o.ref_format == TrajectoryFormat::Kitti || o.est_format == TrajectoryFormat::Kitti;
+  ev::AssociatedTrajectories pairs = readAndAssociate(o, by_index);
+  printAlignment(ev::alignTrajectory(pairs.first, pairs.second, o.align, o.align_origin));
+  const PoseErrors errors = computeErrors(o, pairs.first, pairs.second);
+  const std::string unit = ev::unitOf(o.relation);
+  std::cout << (o.command == "ape" ? "APE" : "RPE") << " w.r.t. " << ev::describe(o.relation)
+            << (unit.empty() ? "" : " (" + unit + ")") << '\n';
+  const ev::ErrorStatistics s = ev::computeStatistics(errors.errors);
+  printStatistics(s);
   if (!o.json_path.empty()) writeJson(o.json_path, s);
-  if (!o.plot_path.empty()) {
-    ev::PlotInput plot;
-    plot.title = metric + " w.r.t. " + ev::describe(o.relation) + ", alignment " +
-                 ev::toString(o.align) + (o.align_origin ? " + origin" : "") + ": " +
-                 o.est_path.substr(o.est_path.find_last_of('/') + 1);
-    plot.reference = ref;
-    plot.estimate = est;
-    plot.errors = errors;
-    plot.error_times = error_times;
-    plot.error_label = metric + (unit.empty() ? "" : " (" + unit + ")");
-    plot.time_label = by_index ? "pose index" : "t - t0 (s)";
-    plot.plane = o.plot_plane;
-    ev::writePlotPng(o.plot_path, plot);
-  }
+  if (!o.plot_path.empty()) writePlot(o, pairs, errors, by_index);
   return 0;
 }
 
