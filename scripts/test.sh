@@ -2,7 +2,8 @@
 # Set-up (scripts/setup.sh: every target, the tests included) followed by the whole test suite.
 # Tests that need ../shared/data or ../shared/models skip, saying why, when that folder is absent.
 #
-#   bash scripts/test.sh [-h|--help]
+#   bash scripts/test.sh
+#     -h, --help   this text
 #   Environment: BUILD_DIR (default build/), DYNSLAM_SHARED_DIR (default ../shared).
 #   Exit codes: 0 every test passed, 1 the set-up failed, 8 some test failed (ctest's code),
 #   2 usage. Outputs: the build in $BUILD_DIR; ctest's log in $BUILD_DIR/Testing/Temporary.

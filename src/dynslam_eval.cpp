@@ -29,13 +29,17 @@ namespace ev = dynslam::evaluation;
 
 const char* const kUsage = R"(usage:
   dynslam-eval ape REF EST [options]
-  dynslam-eval rpe REF EST [options] [--delta N] [--delta-unit f|m] [--all-pairs] [--delta-tol X]
+  dynslam-eval rpe REF EST [options] [rpe options]
   dynslam-eval bars TABLE.tsv OUT.png [--title T] [--value-label L]
+  dynslam-eval -h | --help
 
-Computes evo's absolute (ape) or relative (rpe) pose error of the estimate EST against the
-reference REF and prints the pairs, the alignment and rmse, mean, median, std, min, max, sse.
+ape / rpe compute evo's absolute / relative pose error of the estimate EST against the
+reference REF (github.com/MichaelGrupp/evo, same definitions, so figures compare with published
+ones) and print the files, the pairs, the alignment and rmse, mean, median, std, min, max, sse.
+Poses are associated by timestamp (tum, euroc) like evo, or by index when a file is kitti (the
+files must then hold as many poses).
 
-options:
+options (ape and rpe):
   --format tum|kitti|euroc   format of both files (default tum)
   --ref-format F             format of REF only (e.g. euroc ground truth with a tum estimate)
   --est-format F             format of EST only
@@ -47,20 +51,23 @@ options:
   --json FILE                write {"rmse", "mean", "median", "std", "min", "max", "sse"}
   --plot FILE.png            write a top view of both paths and the error over time
   --plot-plane xy|xz|yz      coordinates of the top view (default xy)
-  -h, --help                 show this text
 rpe options:
   --delta N                  distance between the poses of a pair (default 1)
   --delta-unit f|m           N in frames or in metres of travelled path (default f)
   --all-pairs                use every pair at distance N, not only consecutive ones
   --delta-tol X              relative tolerance of --all-pairs with metres (default 0.1)
   --pairs-from-reference     choose the pairs on REF's path (default: on EST's, as evo does)
+bars options:
+  --title T                  the chart's title
+  --value-label L            the value axis' label
+  -h, --help                 print this text and exit
 
 bars draws a grouped bar chart of TABLE.tsv (tab-separated; '#' lines are comments): a header
 row "GROUP-AXIS<TAB>SERIES1<TAB>SERIES2...", then one row per group, "GROUP<TAB>VALUE...";
-a value "-" or empty draws no bar.
+a value "-" or empty draws no bar. It prints "bars  G groups x S series -> OUT.png".
 
-Poses are associated by timestamp (tum, euroc) like evo, or by index when a file is kitti
-(the files must then hold as many poses).
+Exit codes: 0 success, 1 bad data (unreadable file, nothing to associate, a malformed table),
+2 usage (unknown flag, a flag of another command, a bad value).
 )";
 
 using dynslam::core::UsageError;

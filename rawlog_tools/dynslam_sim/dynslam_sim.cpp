@@ -17,18 +17,42 @@
 
 namespace {
 const char* kUsage =
-    R"(usage: dynslam-sim --config params/sim/NAME.ini --out DIR [--set section.key=value]...
+    R"(usage: dynslam-sim --config params/sim/NAME.ini --out DIR [--set Section.key=value]...
                    [--contact-sheet FILE.png] [--sheet-frames N] [--quiet]
                    [--imu-gap START:SECONDS] [--black-frames FIRST:COUNT] [--no-depth FIRST:COUNT]
+       dynslam-sim -h | --help
 
 Renders the scenario of NAME.ini (sections [Scenario] [Camera] [People] [Cars] [Imu] [Gnss]
-[Noise] [Augment]; scene = room | market | street, or augment: a real rawlog with movers)
-and writes in DIR: sim.rawlog (+ sim_Images/), groundtruth.tum, objects.txt (format in its
-header), labels/NNNNNN.png (16-bit instance ids), imu_biases.txt.
---imu-gap, --black-frames, --no-depth write sensor faults into the rawlog on purpose (IMU samples
-dropped from START seconds on, all-black colour images, all-invalid depth), the ground truth
-unchanged: robustness tests.
---contact-sheet also writes a PNG of N frames (default 4) as colour | depth | labels.
+[Noise] [Augment], every key in docs/parameters.md; scene = room | corridor | market | street,
+or augment: a real rawlog with movers inserted) into a rawlog with full ground truth. The same
+ini and seed give byte-identical outputs.
+
+Options:
+  --config FILE.ini            the scenario
+  --out DIR                    the output folder (created)
+  --set Section.key=value      override one ini value (repeatable), e.g. --set
+                               Scenario.duration=20; unknown keys and sections are errors
+  --contact-sheet FILE.png     also write a PNG of frames spread over the sequence, one row
+                               each: colour | depth | labels
+  --sheet-frames N             rows of the contact sheet (default 4; first and last frame
+                               included)
+  --quiet                      no progress line on stderr
+  --imu-gap START:SECONDS      drop the IMU samples from START s on for SECONDS (a sensor
+                               fault, the ground truth unchanged: robustness tests)
+  --black-frames FIRST:COUNT   write COUNT all-black colour images from frame FIRST on
+  --no-depth FIRST:COUNT       write COUNT all-invalid (0) depth images from frame FIRST on
+  -h, --help                   print this text and exit
+
+Outputs in DIR (formats: docs/programs.md):
+  sim.rawlog         CObservation3DRangeScan "RGBD" (depth uint16 mm, colour in sim_Images/),
+                     CObservationIMU "IMU", CObservationGPS "GPS" (GGA, when [Gnss] enabled),
+                     in time order
+  groundtruth.tum    the camera's (optical frame) pose in the world per frame, TUM
+  objects.txt        per frame and object in view: id, class, moving, world pose, amodal box,
+                     visible pixels and fraction (the layout in its header)
+  labels/NNNNNN.png  16-bit instance ids per pixel (0 = static scene)
+  imu_biases.txt     the true gyro and accelerometer biases at each IMU sample
+Exit codes: 0 written, 1 bad scenario or an output that cannot be written, 2 usage.
 )";
 /// --imu-gap, --black-frames, --no-depth: "FIRST:AMOUNT" pairs.
 dynslam::rawlog_tools::SensorFaults readFaults(const dynslam::core::CommandLine& cl) {

@@ -28,6 +28,7 @@ using dynslam::core::CommandLine;
 namespace {
 
 constexpr const char* kUsage = R"(Usage: sevenscenes2rawlog --in DIR --out FILE.rawlog [options]
+       sevenscenes2rawlog -h | --help
 
 Converts a Microsoft 7-Scenes sequence folder (frame-NNNNNN.color.jpg / .depth.png /
 .pose.txt, camera-intrinsics.txt) into an MRPT rawlog of CObservation3DRangeScan ("RGBD")
@@ -53,7 +54,12 @@ Options:
                       of camera-intrinsics.txt); depth: the depth camera's (colour and depth
                       taken as registered, which 7-Scenes' are not)
   --embed-images      store colour pixels inside the rawlog instead of <stem>_Images/
-  --help              this text
+  -h, --help          print this text and exit
+
+Outputs: FILE.rawlog, <stem>_Images/ (the colour JPEGs, byte for byte), <stem>.gt.tum (the
+frames' camera-to-world poses, TUM). It prints the frames and intrinsics written.
+Exit codes: 0 written, 1 bad input (a missing frame, pose or intrinsics file; a range outside
+the folder), 2 usage.
 )";
 
 /// "fx,fy,cx,cy" (pixels, all finite, focal lengths > 0).

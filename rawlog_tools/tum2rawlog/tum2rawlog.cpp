@@ -27,6 +27,7 @@ using dynslam::core::CommandLine;
 namespace {
 
 constexpr const char* kUsage = R"(Usage: tum2rawlog --in DIR --out FILE.rawlog [options]
+       tum2rawlog -h | --help
 
 Converts a TUM RGB-D sequence folder (rgb.txt, depth.txt, rgb/, depth/, optional
 accelerometer.txt and groundtruth.txt) into an MRPT rawlog of CObservation3DRangeScan
@@ -41,7 +42,13 @@ Options:
                       intrinsics (all four together) instead of the folder-name defaults
   --max-diff S        colour/depth association tolerance in seconds (default 0.02)
   --embed-images      store colour pixels inside the rawlog instead of <stem>_Images/
-  --help              this text
+  -h, --help          print this text and exit
+
+Outputs: FILE.rawlog, <stem>_Images/ (the colour images, as in the sequence), <stem>.gt.tum
+(a copy of groundtruth.txt, when the folder has one). It prints the intrinsics used, the pairs
+associated and dropped, and the observations written.
+Exit codes: 0 written, 1 bad input (a missing or malformed list or image; no rawlog is left
+behind), 2 usage.
 )";
 
 constexpr double kTumDepthUnits = 1.0 / 5000.0;

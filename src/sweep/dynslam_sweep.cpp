@@ -21,26 +21,38 @@ const char* kUsage =
                      --rawlog A [--rawlog B ...] [--gt A.tum [--gt B.tum ...]] --out DIR
                      [--jobs N] [--set Section.key=value]... [--dynslam PATH]
                      [--emit parallel|slurm] [--collect] [--no-check] [--keep-maps]
+       dynslam-sweep -h | --help
 
 Runs `dynslam --config FILE.ini --rawlog R --set ...` for every combination of the --grid values
 and every rawlog R, each into its own folder DIR/jobs/<rawlog>__<Section.key=value>__..., then
-scores each trajectory.tum against the ground truth given for its rawlog (one --gt per --rawlog,
-same order; evo's APE after SE(3) alignment and RPE between consecutive frames, translation, m).
-Writes DIR/results.csv (one row per job: swept values, rawlog, status ok/failed and the reason,
-APE rmse/mean/median/std, RPE rmse/mean, FPS from the run's summary.json) and
-DIR/plot_<Section.key>.png (APE RMSE against each swept key's values).
+scores each trajectory.tum against the ground truth given for its rawlog (evo's APE after SE(3)
+alignment and RPE between consecutive frames, translation, m).
 
-  --jobs N        dynslam processes at once (default 1); with --emit slurm: the array's limit
-  --set S.k=v     a fixed override for every job (repeatable), before the swept ones
-  --dynslam PATH  the dynslam program (default: the one beside dynslam-sweep)
-  --emit parallel write DIR/jobs.txt, one shell command per job, and run nothing; e.g.
-                    parallel --jobs 4 --sshloginfile hosts.txt < DIR/jobs.txt
-                  (paths stay as given, so give ones valid on every host)
-  --emit slurm    also write DIR/sweep.slurm, a job array whose task i runs line i+1 of jobs.txt
-  --collect       run nothing: gather results.csv and the plots from what the jobs left
-  --no-check      skip the one-frame dynslam run that checks the configuration first
-  --keep-maps     let every job write map.3Dscene (by default jobs run with --no-map)
+Options:
+  --config FILE.ini   the dynslam configuration every job starts from
+  --grid TEXT         the swept keys: "Section.key=v1,v2;Section.key2=a,b" (every combination,
+                      the last key varying fastest)
+  --rawlog FILE       an input rawlog (repeatable: every combination runs on each)
+  --gt FILE.tum       the ground truth of the rawlog in the same position (repeatable; none:
+                      no scores, only status and FPS)
+  --out DIR           the sweep's folder (created)
+  --jobs N            dynslam processes at once (default 1); with --emit slurm: the array's limit
+  --set S.k=v         a fixed override for every job (repeatable), before the swept ones
+  --dynslam PATH      the dynslam program (default: the one beside dynslam-sweep)
+  --emit parallel     write DIR/jobs.txt, one shell command per job, and run nothing; e.g.
+                        parallel --jobs 4 --sshloginfile hosts.txt < DIR/jobs.txt
+                      (paths stay as given, so give ones valid on every host)
+  --emit slurm        also write DIR/sweep.slurm, a job array whose task i runs line i+1 of
+                      jobs.txt
+  --collect           run nothing: gather results.csv and the plots from what the jobs left
+  --no-check          skip the one-frame dynslam run that checks the configuration first
+  --keep-maps         let every job write map.3Dscene (by default jobs run with --no-map)
+  -h, --help          print this text and exit
 
+Outputs: DIR/results.csv (one row per job: job, rawlog, the swept values, status ok/failed,
+APE rmse/mean/median/std, RPE rmse/mean, FPS from the run's summary.json, the reason of a
+failure, the job's folder), DIR/plot_<Section.key>.png (APE RMSE against each swept key's
+values), DIR/jobs/<job>/ (dynslam's outputs and dynslam.log), DIR/check/ (the one-frame check).
 Resumable: a job whose folder holds a summary.json with "status": "ok" is not run again (also
 by the job-list lines); a failed or interrupted one is. Progress goes to stderr.
 Before the first job of a new sweep runs, it is tried on one frame, so an unknown Section.key,
