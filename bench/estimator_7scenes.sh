@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
-# The estimator on real RGB-D data (issue 6): the 600 Kinect frames of ../shared/data/7scenes,
-# RGB-D only (params/7scenes_vo.ini). Prints APE RMSE (SE(3)-aligned, target 0.05 m, aim 0.03),
-# the window's median solve time per keyframe (target 30 ms) and the whole pipeline's FPS.
+# The estimator on real RGB-D data: the 600 Kinect frames of ../shared/data/7scenes, RGB-D only
+# (params/7scenes_vo.ini). Prints APE RMSE (SE(3)-aligned, target 0.05 m, aim 0.03), the
+# window's median solve time per keyframe (target 30 ms) and the whole pipeline's FPS.
+#
 #   bash bench/estimator_7scenes.sh [--build DIR] [--out DIR]
+#     --build DIR   the build folder whose bin/ holds the programs (default build/)
+#     --out DIR     work folder (default /tmp/dynslam-7scenes): 7scenes.rawlog (converted again
+#                   when sevenscenes2rawlog is newer), run/ (dynslam's outputs, ape.json),
+#                   run.log
+#     -h, --help    this text
+#   Environment: DYNSLAM_SHARED_DIR (default ../shared).
+#   Exit codes: 0 done, 1 7-Scenes absent or a program failed, 2 usage.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/bench/lib.sh"
@@ -11,6 +19,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --build) BUILD="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "estimator_7scenes.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done

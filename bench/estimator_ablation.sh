@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
-# The estimator's ablation table (issue 6; paper Table 9): renders simulator scenarios, runs the
+# The estimator's ablation table (paper Table 9): renders simulator scenarios, runs the
 # whole system (params/sim_vio.ini) with each variant and prints APE RMSE (SE(3)-aligned), the
 # static scenario's error as a fraction of its path length, the estimator's median solve time per
 # keyframe, the restarts, and per scenario the ratios the issue asks for (full / none <= 0.5,
 # full / remove <= 0.85).
 #   bash bench/estimator_ablation.sh [--build DIR] [--out DIR] [--duration S] [--scenarios "a b"]
+#     --build DIR         the build folder whose bin/ holds the programs (default build/)
+#     --out DIR           work folder (default /tmp/dynslam-ablation): SCENARIO/ (the rendering,
+#                         kept for the next run) and SCENARIO/run_VARIANT/ (dynslam's outputs)
+#     --duration S        seconds rendered per scenario (default 20)
+#     --scenarios "a b"   scenarios of params/sim/ (default "static indoor_people_high
+#                         outdoor_street_high market_crowd_high")
+#     -h, --help          this text
+#   Exit codes: 0 done, 1 a program is missing, 2 usage.
 # Variants (Estimator.* set with --set):
 #   none             dynamic_handling = none: every feature static (VINS-Mono-like)
 #   remove           dynamic_handling = remove: features on detected objects dropped, moving
@@ -33,6 +41,7 @@ while [ $# -gt 0 ]; do
     --out) OUT="$2"; shift 2 ;;
     --duration) DURATION="$2"; shift 2 ;;
     --scenarios) SCENARIOS="$2"; shift 2 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "estimator_ablation.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done

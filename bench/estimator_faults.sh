@@ -1,10 +1,19 @@
 #!/usr/bin/env bash
-# Injected sensor faults (issue 6): renders a scenario with a 1 s IMU gap, 20 black frames and
-# 10 frames without depth (dynslam-sim --imu-gap/--black-frames/--no-depth), runs the whole
-# system (params/sim_vio.ini) and prints its status, APE, restarts and the worst jump of the
+# Injected sensor faults: renders a scenario with a 1 s IMU gap, 20 black frames and 10 frames
+# without depth (dynslam-sim --imu-gap/--black-frames/--no-depth), runs the whole system
+# (params/sim_vio.ini) and prints its status, APE, restarts and the worst jump of the
 # trajectory: the largest difference, over consecutive frames, between the estimated and the
 # true distance moved (a continuous trajectory keeps it at centimetres).
+#
 #   bash bench/estimator_faults.sh [--build DIR] [--out DIR] [--scenario NAME] [--duration S]
+#     --build DIR       the build folder whose bin/ holds the programs (default build/)
+#     --out DIR         work folder (default /tmp/dynslam-faults): NAME/ (the rendering),
+#                       NAME/run/ (dynslam's outputs, ape.json), NAME/run.log
+#     --scenario NAME   a scenario of params/sim/ (default indoor_people_low)
+#     --duration S      seconds rendered (default 20)
+#     -h, --help        this text
+#   Exit codes: 0 done (whatever the run's status, which it prints), 1 a program is missing,
+#   2 usage.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/bench/lib.sh"
@@ -15,6 +24,7 @@ while [ $# -gt 0 ]; do
     --out) OUT="$2"; shift 2 ;;
     --scenario) SCENARIO="$2"; shift 2 ;;
     --duration) DURATION="$2"; shift 2 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "estimator_faults.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done

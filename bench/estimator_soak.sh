@@ -1,10 +1,20 @@
 #!/usr/bin/env bash
-# Soak run (issue 6): a long simulator sequence through the whole system (params/sim_vio.ini),
-# sampling the process's resident memory every few seconds. Prints the resident set after the
-# first 1,000 frames and at the end, the growth between them (target < 5 %), the run's status
-# and APE.
+# Soak run: a long simulator sequence through the whole system (params/sim_vio.ini), sampling
+# the process's resident memory every few seconds. Prints the resident set after the first
+# 1,000 frames and at the end, the growth between them (target < 5 %), the run's status and APE.
+#
 #   bash bench/estimator_soak.sh [--build DIR] [--out DIR] [--frames N] [--scenario NAME]
-#       [--dynslam-args "--no-map ..."]   (extra arguments for the dynslam run)
+#                                [--dynslam-args "ARGS"]
+#     --build DIR           the build folder whose bin/ holds the programs (default build/)
+#     --out DIR             work folder (default /tmp/dynslam-soak): NAME/ (the rendering, kept
+#                           for the next run), NAME/soak/ (dynslam's outputs), NAME/soak.log,
+#                           NAME/soak.rss (seconds and resident kB per sample)
+#     --frames N            frames rendered and run (default 10000, at 30 Hz)
+#     --scenario NAME       a scenario of params/sim/ (default indoor_people_low)
+#     --dynslam-args "ARGS" extra arguments for the dynslam run, e.g. "--no-map"
+#     -h, --help            this text
+#   Exit codes: 0 done (whatever the run's status, which it prints), 1 a program failed,
+#   2 usage.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/bench/lib.sh"
@@ -17,6 +27,7 @@ while [ $# -gt 0 ]; do
     --dynslam-args) EXTRA="$2"; shift 2 ;;
     --frames) FRAMES="$2"; shift 2 ;;
     --scenario) SCENARIO="$2"; shift 2 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "estimator_soak.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done

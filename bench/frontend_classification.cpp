@@ -348,6 +348,43 @@ void run(const Settings& s) {
   printReport(s, rawlog, t, standIn, sim.has_value(), stages);
 }
 
+const char* const kUsage =
+    R"(usage: bench-classification --sim DIR [--config FILE.ini] [--masks pipeline|truth]
+                            [--features stage|klt] [--max-frames N] [--per-frame FILE.csv]
+                            [--set Section.key=value]...
+       bench-classification --rawlog FILE.rawlog --config FILE.ini [--max-frames N]
+                            [--set Section.key=value]...
+       bench-classification -h | --help
+
+Dynamic-feature classification and rigid point sets (method.md sections 3-4): the frames of a
+rawlog go through the stages of the ini's [pipeline] as in dynslam; with --sim they are scored
+against the simulator's ground truth (dynamic precision / recall, where the errors come from,
+non-moving objects judged static, rigid-set motion errors), with --rawlog (a static scene such
+as 7-Scenes) every feature judged dynamic is an error. Prints the scores and each stage's
+median time per frame.
+
+Options:
+  --sim DIR              a dynslam-sim output folder (sim.rawlog, labels/, objects.txt,
+                         groundtruth.tum); Detection.objects is set to DIR/objects.txt
+  --rawlog FILE.rawlog   a real rawlog instead (give exactly one of --sim and --rawlog)
+  --config FILE.ini      the system's ini (default params/sim_frontend.ini)
+  --masks pipeline|truth
+                         the masks classification sees: the pipeline's (default), or each
+                         ground-truth detection's true pixels (the classification without the
+                         segmentation's errors)
+  --features stage|klt   the FeatureTracking stage (default when the ini has one) or a plain
+                         Shi-Tomasi/KLT stand-in
+  --max-frames N         frames at most (default: all)
+  --per-frame FILE.csv   one row per scored frame: frame,t_s,static,static_on_moving,dynamic,
+                         dynamic_on_still (feature counts: predicted static, of those on a
+                         moving object; predicted dynamic, of those on a still one)
+  --set Section.key=value
+                         override an ini value (repeatable)
+  -h, --help             print this text and exit
+
+Exit codes: 0 done, 1 bad input or configuration, 2 usage.
+)";
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -357,9 +394,7 @@ int main(int argc, char** argv) {
         {}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
-      std::cout << "usage: bench-classification (--sim DIR | --rawlog FILE) [--config INI] "
-                   "[--masks pipeline|truth] [--features stage|klt] [--max-frames N] "
-                   "[--per-frame FILE.csv] [--set Section.key=value]...\n";
+      std::cout << kUsage;
       return 0;
     }
     Settings s;

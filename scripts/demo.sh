@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Set-up (scripts/setup.sh) followed by the main job, which needs no download.
+# Builds the programs the main job runs (scripts/setup.sh with their targets only), then runs
+# it; it needs no download.
 #
 # Default (--input sim): renders 20 s of the simulator's indoor_people_high scenario (three people
 # walking across a room in front of a handheld RGB-D + IMU camera; cached in build/demo/sim and
@@ -12,14 +13,26 @@
 #
 #   bash scripts/demo.sh [--input sim|7scenes] [--config params/FILE.ini] [--no-build]
 #                        [--set Section.key=value]...
-#
-# --no-build uses the programs already in $BUILD_DIR/bin (no package check, no build).
-# --set is handed to dynslam (repeatable), e.g. --set Estimator.max_solver_time=100: the
-# estimator's solves then stop on their iteration count, not the clock, and the trajectory is
-# the same to the byte from run to run, whatever else the machine is doing.
+#     --input sim|7scenes  the simulated scenario (default) or the real 7-Scenes frames
+#     --config FILE.ini    the dynslam configuration (default params/sim_vio.ini, or
+#                          params/7scenes_rgbd_odometry.ini with --input 7scenes)
+#     --no-build           use the programs already in $BUILD_DIR/bin (no package check, no
+#                          build)
+#     --set Section.key=value
+#                          handed to dynslam (repeatable), e.g. --set
+#                          Estimator.max_solver_time=100: the estimator's solves then stop on
+#                          their iteration count, not the clock, and the trajectory is the same
+#                          to the byte from run to run, whatever else the machine is doing
+#     -h, --help           this text
+# Without --no-build it builds dynslam, dynslam-eval and dynslam-sim (--input sim) or
+# sevenscenes2rawlog (--input 7scenes), installing missing Debian packages first.
+# Environment: BUILD_DIR (default build/), DYNSLAM_SHARED_DIR (default ../shared).
 # Outputs in build/demo/<input>_run: trajectory.tum, objects/ID.tum, map.3Dscene (open it with
-# SceneViewer3D), timing.csv, summary.json (with the APE), frames/ (annotated PNGs and
-# annotated.avi), ape.json and ape.png (dynslam-eval's plot).
+# SceneViewer3D), timing.csv, keyframes.csv, summary.json (with the APE), frames/ (annotated
+# PNGs and annotated.avi), ape.json and ape.png (dynslam-eval's plot); formats in
+# docs/programs.md.
+# Exit codes: 0 done, 1 a build, a program or the data failed (7-Scenes absent), 2 usage,
+# 130 interrupted (Ctrl-C).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
@@ -33,7 +46,7 @@ while [ $# -gt 0 ]; do
     --config) CONFIG="$2"; shift 2 ;;
     --no-build) BUILD=0; shift ;;
     --set) SETS+=(--set "$2"); shift 2 ;;
-    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "demo: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -42,7 +55,14 @@ case "$INPUT" in
   *) echo "demo: --input must be sim or 7scenes, not '$INPUT'" >&2; exit 2 ;;
 esac
 
-if [ "$BUILD" = 1 ]; then bash "$ROOT/scripts/setup.sh"; fi
+# Only the programs this input runs: a first demo does not wait for the tests to build.
+if [ "$BUILD" = 1 ]; then
+  if [ "$INPUT" = sim ]; then
+    bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval dynslam-sim
+  else
+    bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval sevenscenes2rawlog
+  fi
+fi
 BIN="$BUILD_DIR/bin"
 DEMO="$BUILD_DIR/demo"
 RUN="$DEMO/${INPUT}_run"

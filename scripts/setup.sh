@@ -3,12 +3,26 @@
 # then configures and builds into build/. Safe to run again: a second run installs nothing and
 # rebuilds only what changed.
 #
-#   bash scripts/setup.sh            # install + build
-#   BUILD_DIR=out bash scripts/setup.sh
+#   bash scripts/setup.sh [TARGET...]
+#     TARGET     build only these CMake targets (e.g. dynslam dynslam-eval) and what they
+#                need; none given: everything, the tests included
+#     -h, --help this text
+#   Environment: BUILD_DIR (default build/).
+#   Exit codes: 0 built, 1 a package could not be installed (no root, no sudo) or the build
+#   failed, 2 usage. Outputs: the programs in $BUILD_DIR/bin, the test binaries in
+#   $BUILD_DIR/tests.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
+TARGETS=()
+for arg in "$@"; do
+  case "$arg" in
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
+    -*) echo "setup: unknown argument '$arg' (see --help)" >&2; exit 2 ;;
+    *) TARGETS+=(--target "$arg") ;;
+  esac
+done
 
 # What each package is for is in README.md ("Dependencies").
 PACKAGES=(build-essential cmake ccache zlib1g-dev
@@ -27,13 +41,15 @@ if ((${#missing[@]})); then
     SUDO="sudo"
   fi
   echo "setup: installing ${missing[*]}"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  { $SUDO apt-get update -qq &&
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  } || { echo "setup: apt-get could not install ${missing[*]}" >&2; exit 1; }
 else
   echo "setup: all Debian packages present"
 fi
 
 JOBS="$(nproc 2>/dev/null || echo 2)"
-cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD_DIR" -j"$JOBS"
+{ cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+  cmake --build "$BUILD_DIR" -j"$JOBS" "${TARGETS[@]}"
+} || { echo "setup: the build failed" >&2; exit 1; }
 echo "setup: programs in $BUILD_DIR/bin"

@@ -5,10 +5,14 @@
 # ../shared/data/7scenes with sevenscenes2rawlog (skipped, saying so, when it is absent).
 #
 #   bash scripts/sim_scenarios.sh [--out DIR] [--only NAME] [--duration S]
-#     --out       where the sequences go (default build/sim; the street ones are ~1 GB each)
-#     --only      one scenario, e.g. --only market_crowd_high
-#     --duration  override every scenario's duration (s), for a quick look
-# Needs a build (bash scripts/setup.sh).
+#     --out DIR       where the sequences go, one folder per scenario (default build/sim; the
+#                     street ones are ~1 GB each)
+#     --only NAME     one scenario, e.g. --only market_crowd_high
+#     --duration S    override every scenario's duration (s), for a quick look
+#     -h, --help      this text
+#   Environment: BUILD_DIR (default build/), DYNSLAM_SHARED_DIR (default ../shared).
+#   Prints per scenario its render time and the rawlog's observations per sensor label.
+#   Exit codes: 0 done, 1 a program failed, 2 usage. Needs a build (bash scripts/setup.sh).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="${BUILD_DIR:-$ROOT/build}/bin"
@@ -20,7 +24,8 @@ while (($#)); do
     --out) OUT="$2"; shift 2 ;;
     --only) ONLY="$2"; shift 2 ;;
     --duration) EXTRA+=(--set "Scenario.duration=$2"); shift 2 ;;
-    *) echo "sim_scenarios: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
+    *) echo "sim_scenarios: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
 SHARED="${DYNSLAM_SHARED_DIR:-$ROOT/../shared}"

@@ -29,13 +29,17 @@ namespace ev = dynslam::evaluation;
 
 const char* const kUsage = R"(usage:
   dynslam-eval ape REF EST [options]
-  dynslam-eval rpe REF EST [options] [--delta N] [--delta-unit f|m] [--all-pairs] [--delta-tol X]
+  dynslam-eval rpe REF EST [options] [rpe options]
   dynslam-eval bars TABLE.tsv OUT.png [--title T] [--value-label L]
+  dynslam-eval -h | --help
 
-Computes evo's absolute (ape) or relative (rpe) pose error of the estimate EST against the
-reference REF and prints the pairs, the alignment and rmse, mean, median, std, min, max, sse.
+ape / rpe compute evo's absolute / relative pose error of the estimate EST against the
+reference REF (github.com/MichaelGrupp/evo, same definitions, so figures compare with published
+ones) and print the files, the pairs, the alignment and rmse, mean, median, std, min, max, sse.
+Poses are associated by timestamp (tum, euroc) like evo, or by index when a file is kitti (the
+files must then hold as many poses).
 
-options:
+options (ape and rpe):
   --format tum|kitti|euroc   format of both files (default tum)
   --ref-format F             format of REF only (e.g. euroc ground truth with a tum estimate)
   --est-format F             format of EST only
@@ -47,20 +51,23 @@ options:
   --json FILE                write {"rmse", "mean", "median", "std", "min", "max", "sse"}
   --plot FILE.png            write a top view of both paths and the error over time
   --plot-plane xy|xz|yz      coordinates of the top view (default xy)
-  -h, --help                 show this text
 rpe options:
   --delta N                  distance between the poses of a pair (default 1)
   --delta-unit f|m           N in frames or in metres of travelled path (default f)
   --all-pairs                use every pair at distance N, not only consecutive ones
   --delta-tol X              relative tolerance of --all-pairs with metres (default 0.1)
   --pairs-from-reference     choose the pairs on REF's path (default: on EST's, as evo does)
+bars options:
+  --title T                  the chart's title
+  --value-label L            the value axis' label
+  -h, --help                 print this text and exit
 
 bars draws a grouped bar chart of TABLE.tsv (tab-separated; '#' lines are comments): a header
 row "GROUP-AXIS<TAB>SERIES1<TAB>SERIES2...", then one row per group, "GROUP<TAB>VALUE...";
-a value "-" or empty draws no bar.
+a value "-" or empty draws no bar. It prints "bars  G groups x S series -> OUT.png".
 
-Poses are associated by timestamp (tum, euroc) like evo, or by index when a file is kitti
-(the files must then hold as many poses).
+Exit codes: 0 success, 1 bad data (unreadable file, nothing to associate, a malformed table),
+2 usage (unknown flag, a flag of another command, a bad value).
 )";
 
 using dynslam::core::UsageError;
@@ -259,17 +266,14 @@ int runBars(const dynslam::core::CommandLine& cl) {
   return 0;
 }
 
-int run(const Options& o) {
+/// Reads both files and pairs their poses (printing both and the pairing).
+ev::AssociatedTrajectories readAndAssociate(const Options& o, bool by_index) {
   const auto ref_full = dynslam::core::readTrajectory(o.ref_path, o.ref_format);
   const auto est_full = dynslam::core::readTrajectory(o.est_path, o.est_format);
   std::cout << "reference   " << o.ref_path << " (" << formatName(o.ref_format) << ", "
             << ref_full.size() << " poses)\n"
             << "estimate    " << o.est_path << " (" << formatName(o.est_format) << ", "
             << est_full.size() << " poses)\n";
-
-  // KITTI files carry no time, so any pair with one is paired by index (evo's kitti mode).
-  const bool by_index =
-      o.ref_format == TrajectoryFormat::Kitti || o.est_format == TrajectoryFormat::Kitti;
   ev::AssociatedTrajectories pairs =
       by_index ? ev::associateByIndex(ref_full, est_full)
                : ev::associateByTime(ref_full, est_full, o.t_max_diff, o.t_offset);
@@ -278,30 +282,33 @@ int run(const Options& o) {
   else
     std::cout << "pairs       " << pairs.first.size() << " of max. " << pairs.max_pairs
               << " (max. time diff " << o.t_max_diff << " s, offset " << o.t_offset << " s)\n";
+  return pairs;
+}
 
-  const dynslam::core::Trajectory& ref = pairs.first;
-  dynslam::core::Trajectory& est = pairs.second;
-  printAlignment(ev::alignTrajectory(ref, est, o.align, o.align_origin));
+/// The errors (APE per pose or RPE per pair) and when each occurs, in s since EST's first pose.
+struct PoseErrors {
+  std::vector<double> errors, times;
+};
 
-  std::vector<double> errors, error_times;
+PoseErrors computeErrors(const Options& o, const dynslam::core::Trajectory& ref,
+                         const dynslam::core::Trajectory& est) {
+  PoseErrors e;
   const double t0 = est.front().t;
   if (o.command == "ape") {
-    errors = ev::computeApe(ref, est, o.relation);
-    for (const auto& p : est) error_times.push_back(p.t - t0);
-  } else {
-    const ev::RpeResult rpe = ev::computeRpe(ref, est, o.rpe);
-    errors = rpe.errors;
-    for (const auto& [i, j] : rpe.pairs) error_times.push_back(est[j].t - t0);
-    std::cout << "rpe pairs   " << rpe.pairs.size() << " (delta " << o.rpe.delta
-              << (o.rpe.delta_unit == ev::DeltaUnit::Frames ? " frames" : " m")
-              << (o.rpe.all_pairs ? ", all pairs" : ", consecutive pairs") << ")\n";
+    e.errors = ev::computeApe(ref, est, o.relation);
+    for (const auto& p : est) e.times.push_back(p.t - t0);
+    return e;
   }
-  const std::string unit = ev::unitOf(o.relation);
-  const std::string metric = o.command == "ape" ? "APE" : "RPE";
-  std::cout << metric << " w.r.t. " << ev::describe(o.relation)
-            << (unit.empty() ? "" : " (" + unit + ")") << '\n';
+  const ev::RpeResult rpe = ev::computeRpe(ref, est, o.rpe);
+  e.errors = rpe.errors;
+  for (const auto& [i, j] : rpe.pairs) e.times.push_back(est[j].t - t0);
+  std::cout << "rpe pairs   " << rpe.pairs.size() << " (delta " << o.rpe.delta
+            << (o.rpe.delta_unit == ev::DeltaUnit::Frames ? " frames" : " m")
+            << (o.rpe.all_pairs ? ", all pairs" : ", consecutive pairs") << ")\n";
+  return e;
+}
 
-  const ev::ErrorStatistics s = ev::computeStatistics(errors);
+void printStatistics(const ev::ErrorStatistics& s) {
   const std::pair<const char*, double> rows[] = {
       {"rmse", s.rmse}, {"mean", s.mean}, {"median", s.median}, {"std", s.std},
       {"min", s.min},   {"max", s.max},   {"sse", s.sse}};
@@ -310,21 +317,40 @@ int run(const Options& o) {
     padded.resize(7, ' ');
     std::cout << padded << fullPrecision(value) << '\n';
   }
+}
+
+void writePlot(const Options& o, const ev::AssociatedTrajectories& pairs, const PoseErrors& e,
+               bool by_index) {
+  const std::string unit = ev::unitOf(o.relation);
+  const std::string metric = o.command == "ape" ? "APE" : "RPE";
+  ev::PlotInput plot;
+  plot.title = metric + " w.r.t. " + ev::describe(o.relation) + ", alignment " +
+               ev::toString(o.align) + (o.align_origin ? " + origin" : "") + ": " +
+               o.est_path.substr(o.est_path.find_last_of('/') + 1);
+  plot.reference = pairs.first;
+  plot.estimate = pairs.second;
+  plot.errors = e.errors;
+  plot.error_times = e.times;
+  plot.error_label = metric + (unit.empty() ? "" : " (" + unit + ")");
+  plot.time_label = by_index ? "pose index" : "t - t0 (s)";
+  plot.plane = o.plot_plane;
+  ev::writePlotPng(o.plot_path, plot);
+}
+
+int run(const Options& o) {
+  // KITTI files carry no time, so any pair with one is paired by index (evo's kitti mode).
+  const bool by_index =
+      o.ref_format == TrajectoryFormat::Kitti || o.est_format == TrajectoryFormat::Kitti;
+  ev::AssociatedTrajectories pairs = readAndAssociate(o, by_index);
+  printAlignment(ev::alignTrajectory(pairs.first, pairs.second, o.align, o.align_origin));
+  const PoseErrors errors = computeErrors(o, pairs.first, pairs.second);
+  const std::string unit = ev::unitOf(o.relation);
+  std::cout << (o.command == "ape" ? "APE" : "RPE") << " w.r.t. " << ev::describe(o.relation)
+            << (unit.empty() ? "" : " (" + unit + ")") << '\n';
+  const ev::ErrorStatistics s = ev::computeStatistics(errors.errors);
+  printStatistics(s);
   if (!o.json_path.empty()) writeJson(o.json_path, s);
-  if (!o.plot_path.empty()) {
-    ev::PlotInput plot;
-    plot.title = metric + " w.r.t. " + ev::describe(o.relation) + ", alignment " +
-                 ev::toString(o.align) + (o.align_origin ? " + origin" : "") + ": " +
-                 o.est_path.substr(o.est_path.find_last_of('/') + 1);
-    plot.reference = ref;
-    plot.estimate = est;
-    plot.errors = errors;
-    plot.error_times = error_times;
-    plot.error_label = metric + (unit.empty() ? "" : " (" + unit + ")");
-    plot.time_label = by_index ? "pose index" : "t - t0 (s)";
-    plot.plane = o.plot_plane;
-    ev::writePlotPng(o.plot_path, plot);
-  }
+  if (!o.plot_path.empty()) writePlot(o, pairs, errors, by_index);
   return 0;
 }
 

@@ -11,54 +11,68 @@
 
 namespace {
 const char* kUsage =
-    R"(usage: dynslam --config FILE.ini --rawlog FILE.rawlog --out DIR [--set section.key=value]...
-               [--max-frames N] [--gt GT.tum] [--frames DIR [--no-video]] [--realtime]
-               [--no-map] [--map-every N] [--map-voxel M] [--quiet]
-               [--gui [--gui-rate HZ] [--gui-screenshot FILE.png]]
-       dynslam --config FILE.ini [--set section.key=value]... --print-config
+    R"(usage: dynslam --config FILE.ini --rawlog FILE.rawlog --out DIR [options]
+       dynslam --config FILE.ini [--set Section.key=value]... --print-config
+       dynslam -h | --help
 
-Plays FILE.rawlog (RGB-D CObservation3DRangeScan, CObservationIMU, CObservationGPS; observation
-or action/sensory-frame layout) through the stages listed in [pipeline] stages of FILE.ini, and
-writes in DIR:
-  trajectory.tum   camera poses (timestamp tx ty tz qx qy qz qw), written as they are estimated
+Plays FILE.rawlog through the stages listed in [pipeline] stages of FILE.ini (detector ->
+segmenter -> tracker -> front-end -> estimator, as the ini lists them) and writes the camera
+trajectory, the objects' trajectories and the run's records in DIR.
+
+Options:
+  --config FILE.ini          the configuration: [pipeline] stages and each stage's section
+                             (every key: docs/parameters.md)
+  --rawlog FILE.rawlog       the input: RGB-D CObservation3DRangeScan, CObservationIMU,
+                             CObservationGPS (GGA), in the observation or the
+                             action/sensory-frame layout
+  --out DIR                  the output folder (created; files in it are replaced)
+  --set Section.key=value    override one ini value (repeatable, applied in order); unknown
+                             keys, sections and stage names are errors
+  --max-frames N             stop after N frames (default: every frame)
+  --gt GT.tum                score trajectory.tum against a TUM ground truth as dynslam-eval's
+                             ape with SE(3) alignment does (evo's APE, translation, stamps
+                             associated within 0.01 s); print the RMSE and write the statistics
+                             into summary.json ("ape")
+  --frames DIR               also write DIR/NNNNNN.png per frame: the colour image with the
+                             detector boxes, the object masks, the tracks (id, class, depth)
+                             and the features by class (green static, orange rigid, magenta
+                             non-rigid), and the same pictures as DIR/annotated.avi
+                             (Motion-JPEG at the camera's frame rate)
+  --no-video                 with --frames: the PNGs only, no annotated.avi
+  --realtime                 play the rawlog at camera rate (each frame handed over when its
+                             stamp says), as a live camera would; with [Detection] mode =
+                             realtime the detector thread runs at the rate it can keep;
+                             summary.json gets "realtime" (lag behind the camera)
+  --no-map                   do not write map.3Dscene
+  --map-every N              the static map takes one posed frame in N (default 10)
+  --map-voxel M              the static map keeps one point per M-metre cube (default 0.05)
+  --quiet                    no progress line on stderr
+  --gui                      a live MRPT 3-D window (needs an X display; without one:
+                             xvfb-run -a dynslam --gui ...): what map.3Dscene will hold, the
+                             current camera as axes and the annotated picture of the frame;
+                             closing it does not stop the run, which writes every output
+  --gui-rate HZ              redraw the window at most HZ times a second (default 10; the map,
+                             trajectory and tracks at most once a second)
+  --gui-screenshot FILE.png  (implies --gui) write the window's final picture to FILE.png
+  --print-config             configure the stages as a run would and print the configuration
+                             it would run with, as an ini (every key of every section read:
+                             the ini's values and the defaults of the rest, each with its
+                             meaning), then exit; nothing is read or written
+  -h, --help                 print this text and exit
+
+Outputs in DIR (formats: docs/programs.md):
+  trajectory.tum   camera poses, "t tx ty tz qx qy qz qw", written as they are estimated
   objects/ID.tum   the world pose of each object the estimator follows (track id ID), same format
-  summary.json     status, counts per observation type, frames, fps, per-stage median times
-                   (and "ape" with --gt)
+  summary.json     status, counts per observation type, frames, poses, FPS, per-stage median
+                   times and statistics ("ape" with --gt, "realtime" with --realtime)
   timing.csv       one row per frame: frame,t_s,<stage>_ms for every stage,pipeline_ms
-  keyframes.csv    with the estimator, one row per keyframe: frame,t_s, why it is one (first,
-                   parallax, interval, few_shared), static / shared / non-rigid features,
-                   rigid objects, solve_ms, iterations, restarted, visual_inertial, then its
-                   velocity and accelerometer / gyroscope biases after the solve
-  map.3Dscene      for SceneViewer3D (MRPT COpenGLScene): "static_map", a coloured point cloud
-                   of the depth outside object masks (one frame in --map-every N, default 10;
-                   one point per --map-voxel M cube, default 0.05 m), "camera_trajectory" (black
-                   polyline) and "object_ID" (the poses of objects/ID.tum, one colour per object)
---gt GT.tum scores trajectory.tum against a TUM ground truth as `dynslam-eval ape GT.tum
-trajectory.tum --align se3` does (evo's APE, translation, SE(3) Umeyama alignment, stamps
-associated within 0.01 s), prints the RMSE and writes the statistics into summary.json.
---frames DIR also writes DIR/NNNNNN.png per frame: the colour image with the detector boxes, the
-object masks, the tracks (id, class, depth) and the features by class (green static, orange
-rigid, magenta non-rigid) drawn on it, and the same pictures as the video DIR/annotated.avi
-(Motion-JPEG in AVI, written by OpenCV itself without FFmpeg, at the camera's frame rate;
---no-video: PNGs only).
---realtime plays the rawlog at camera rate (frames handed over as their stamps say), as a live
-camera would; with [Detection] mode = realtime the detector thread then runs at the rate it can
-keep, and summary.json gets "realtime" (lag behind the camera) and the detector's rate.
---gui opens a live MRPT 3-D window (needs an X display; without one: xvfb-run -a dynslam --gui
-...) showing what map.3Dscene will hold (static map, black camera trajectory, object tracks),
-the current camera as axes and the annotated picture of the frame (as --frames draws it) in the
-lower-left corner; redrawn at most --gui-rate HZ times a second (default 10), the map, trajectory
-and tracks at most once a second, so the stages are barely slowed (about 5% fewer FPS). Closing
-the window does not stop the run: it goes on without the window and writes every output. The
-window closes when the run ends (map.3Dscene keeps the result for SceneViewer3D).
---gui-screenshot FILE.png (implies --gui) writes the window's final picture (read back from the
-window, or drawn off-screen from the window's viewpoint where software OpenGL reads the window
-back black).
---set overrides one ini value (repeatable). Unknown keys, sections and stage names are errors.
---print-config configures the stages as a run would and prints the configuration it would run
-with, as an ini (every key of every section read, the ini's values and the defaults of the rest,
-each with its meaning), then exits; nothing is read or written.
-Exit codes: 0 ok, 1 bad input or configuration (outputs hold what was done), 2 usage, 130 Ctrl-C.
+  keyframes.csv    with a pose estimator, one row per keyframe: why it is one, the features
+                   and objects in the solve, solve time, velocity and IMU biases after it
+  map.3Dscene      for SceneViewer3D: "static_map" (coloured points of the depth outside object
+                   masks), "camera_trajectory" (black polyline), "object_ID" (one per object)
+Exit codes: 0 ok, 1 bad input or configuration (the outputs hold what was done before the
+error; summary.json says "failed" and why), 2 usage, 130 interrupted (Ctrl-C; outputs hold the
+frames done).
 )";
 }  // namespace
 

@@ -19,6 +19,8 @@ namespace {
 
 constexpr const char* kUsage =
     R"(Usage: bag2rawlog --bag FILE.bag --topics TOPICS.ini --out FILE.rawlog [options]
+       bag2rawlog --print-topics-template
+       bag2rawlog -h | --help
 
 Converts a ROS 1 bag into an MRPT rawlog, written in header-stamp order:
   rgb_topic + depth_topic -> CObservation3DRangeScan "RGBD" (each colour image with the nearest
@@ -39,7 +41,16 @@ Options:
   --out FILE.rawlog      output rawlog
   --embed-images         store colour pixels inside the rawlog instead of <stem>_Images/
   --print-topics-template  print every topic-map key with its default and meaning, then exit
-  --help                 this text
+  -h, --help             print this text and exit
+
+Outputs: FILE.rawlog, <stem>_Images/ beside it (unless --embed-images). It prints the messages
+read and the observations written per sensor label, and warns (stderr) of what it left out:
+colour without depth, unpaired depth, gyro samples outside the accelerometer's span, samples
+out of order, NavSatFix without a fix, NMEA sentences MRPT does not read, observations later
+than reorder_window.
+Exit codes: 0 written, 1 bad input (missing bag, a mapped topic the bag lacks or of the wrong
+type, an inconsistent topic map, an unreadable depth encoding) or no observation written,
+2 usage.
 )";
 
 int run(const CommandLine& args) {

@@ -21,6 +21,7 @@ namespace {
 
 constexpr const char* kUsage =
     R"(Usage: euroc_imu2rawlog --imu imu.csv [--gt groundtruth.csv] --out FILE.rawlog
+       euroc_imu2rawlog -h | --help
 
 Converts EuRoC MAV IMU data (csv: t[ns], gyro x y z [rad/s], acc x y z [m/s^2]) into an MRPT
 rawlog of CObservationIMU ("IMU") observations with gyro (IMU_WX..WZ) and acc
@@ -33,7 +34,11 @@ Options:
   --imu FILE          EuRoC imu.csv
   --gt FILE           EuRoC groundtruth.csv (optional)
   --out FILE.rawlog   output rawlog
-  --help              this text
+  -h, --help          print this text and exit
+
+Outputs: FILE.rawlog; with --gt, <stem>.gt.tum beside it (the IMU's pose per groundtruth.csv
+row, TUM, stamps in seconds).
+Exit codes: 0 written, 1 bad input (the error names the file, line and column), 2 usage.
 )";
 
 /// Rejects a stamp that does not follow the previous one (EuRoC stamps strictly increase;

@@ -16,7 +16,9 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -26,6 +28,7 @@ using dynslam::core::CommandLine;
 namespace {
 
 constexpr const char* kUsage = R"(Usage: sevenscenes2rawlog --in DIR --out FILE.rawlog [options]
+       sevenscenes2rawlog -h | --help
 
 Converts a Microsoft 7-Scenes sequence folder (frame-NNNNNN.color.jpg / .depth.png /
 .pose.txt, camera-intrinsics.txt) into an MRPT rawlog of CObservation3DRangeScan ("RGBD")
@@ -51,7 +54,12 @@ Options:
                       of camera-intrinsics.txt); depth: the depth camera's (colour and depth
                       taken as registered, which 7-Scenes' are not)
   --embed-images      store colour pixels inside the rawlog instead of <stem>_Images/
-  --help              this text
+  -h, --help          print this text and exit
+
+Outputs: FILE.rawlog, <stem>_Images/ (the colour JPEGs, byte for byte), <stem>.gt.tum (the
+frames' camera-to-world poses, TUM). It prints the frames and intrinsics written.
+Exit codes: 0 written, 1 bad input (a missing frame, pose or intrinsics file; a range outside
+the folder), 2 usage.
 )";
 
 /// "fx,fy,cx,cy" (pixels, all finite, focal lengths > 0).
@@ -84,12 +92,9 @@ constexpr double kColourFocal = 525.0;
 constexpr double kDefaultT0 = 1600000000.0;
 constexpr uint16_t kInvalidDepth = 65535;
 
-int convert(const CommandLine& args) {
-  const std::string inDir = args.required("--in");
-  if (!fs::is_directory(inDir)) throw ConversionError("input folder " + inDir + " does not exist");
-  const RawlogOutputPaths out = rawlogOutputPaths(args.required("--out"));
-  const double t0 = args.optionalDouble("--t0").value_or(kDefaultT0);
-  if (t0 <= 0) throw ConversionError("--t0 must be > 0 (MRPT reads time 0 as 'no time stamp')");
+/// --first and --last, checked against the folder before anything is converted, so a range
+/// typo fails at once, not after minutes.
+std::pair<long long, long long> frameRange(const CommandLine& args, const std::string& inDir) {
   const long long first = args.optionalInteger("--first").value_or(0);
   const long long lastInDir = sevenscenes::lastFrameIndex(inDir);
   const long long last = args.has("--last") ? *args.optionalInteger("--last") : lastInDir;
@@ -97,19 +102,56 @@ int convert(const CommandLine& args) {
   if (last < first)
     throw ConversionError("no frames to convert: --first " + std::to_string(first) +
                           " is after the last frame " + std::to_string(last));
-  // Checked before converting anything, so a range typo fails at once, not after minutes.
   if (last > lastInDir)
     throw ConversionError(sevenscenes::framePaths(inDir, last).colour + " does not exist (the " +
                           "last frame in " + inDir + " is " + std::to_string(lastInDir) + ")");
+  return {first, last};
+}
+
+/// The colour camera's intrinsics: 525 px and the depth camera's principal point by default,
+/// --colour-intrinsics fx,fy,cx,cy, or none (registered to depth) with --colour-intrinsics depth.
+std::optional<PinholeIntrinsics> colourIntrinsicsOf(const CommandLine& args,
+                                                    const PinholeIntrinsics& depth) {
+  std::optional<PinholeIntrinsics> colour =
+      PinholeIntrinsics{kColourFocal, kColourFocal, depth.cx, depth.cy};
+  const std::string text = args.valueOr("--colour-intrinsics", "");
+  if (text == "depth")
+    colour.reset();
+  else if (!text.empty())
+    colour = parseIntrinsics("--colour-intrinsics", text);
+  return colour;
+}
+
+RgbdFrame readFrame(const sevenscenes::FramePaths& paths, double t,
+                    const PinholeIntrinsics& intrinsics,
+                    const std::optional<PinholeIntrinsics>& colourIntrinsics,
+                    ColourImageStore& images) {
+  RgbdFrame frame;
+  frame.timestamp = mrpt::Clock::fromDouble(t);
+  frame.sensorLabel = kRgbdLabel;
+  frame.depthSourceName = paths.depth;
+  if (!fs::is_regular_file(paths.depth))
+    throw ConversionError("depth image " + paths.depth + " does not exist");
+  frame.depth = cv::imread(paths.depth, cv::IMREAD_UNCHANGED);
+  if (frame.depth.empty()) throw ConversionError("cannot read depth image " + paths.depth);
+  frame.invalidDepthValue = kInvalidDepth;
+  frame.rangeUnits = 1.0f / 1000.0f;
+  frame.intrinsics = intrinsics;
+  frame.colourIntrinsics = colourIntrinsics;
+  frame.colour = images.storeFile(paths.colour, fs::path(paths.colour).stem().string());
+  return frame;
+}
+
+int convert(const CommandLine& args) {
+  const std::string inDir = args.required("--in");
+  if (!fs::is_directory(inDir)) throw ConversionError("input folder " + inDir + " does not exist");
+  const RawlogOutputPaths out = rawlogOutputPaths(args.required("--out"));
+  const double t0 = args.optionalDouble("--t0").value_or(kDefaultT0);
+  if (t0 <= 0) throw ConversionError("--t0 must be > 0 (MRPT reads time 0 as 'no time stamp')");
+  const auto [first, last] = frameRange(args, inDir);
   const PinholeIntrinsics intrinsics = sevenscenes::readIntrinsics(inDir);
   // camera-intrinsics.txt is the depth camera's; the colour camera is wider (see kUsage).
-  std::optional<PinholeIntrinsics> colourIntrinsics =
-      PinholeIntrinsics{kColourFocal, kColourFocal, intrinsics.cx, intrinsics.cy};
-  const std::string colourText = args.valueOr("--colour-intrinsics", "");
-  if (colourText == "depth")
-    colourIntrinsics.reset();
-  else if (!colourText.empty())
-    colourIntrinsics = parseIntrinsics("--colour-intrinsics", colourText);
+  const std::optional<PinholeIntrinsics> colourIntrinsics = colourIntrinsicsOf(args, intrinsics);
   const PinholeIntrinsics colour = colourIntrinsics.value_or(intrinsics);
 
   ColourImageStore images(
@@ -119,19 +161,7 @@ int convert(const CommandLine& args) {
   for (long long index = first; index <= last; ++index) {
     const sevenscenes::FramePaths paths = sevenscenes::framePaths(inDir, index);
     const double t = t0 + static_cast<double>(index) / kFrameRate;
-    RgbdFrame frame;
-    frame.timestamp = mrpt::Clock::fromDouble(t);
-    frame.sensorLabel = kRgbdLabel;
-    frame.depthSourceName = paths.depth;
-    if (!fs::is_regular_file(paths.depth))
-      throw ConversionError("depth image " + paths.depth + " does not exist");
-    frame.depth = cv::imread(paths.depth, cv::IMREAD_UNCHANGED);
-    if (frame.depth.empty()) throw ConversionError("cannot read depth image " + paths.depth);
-    frame.invalidDepthValue = kInvalidDepth;
-    frame.rangeUnits = 1.0f / 1000.0f;
-    frame.intrinsics = intrinsics;
-    frame.colourIntrinsics = colourIntrinsics;
-    frame.colour = images.storeFile(paths.colour, fs::path(paths.colour).stem().string());
+    const RgbdFrame frame = readFrame(paths, t, intrinsics, colourIntrinsics, images);
     groundTruth.push_back({t, sevenscenes::readPose(paths.pose)});
     writer.write(*makeRgbdObservation(frame));
   }

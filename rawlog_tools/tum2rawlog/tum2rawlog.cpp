@@ -27,6 +27,7 @@ using dynslam::core::CommandLine;
 namespace {
 
 constexpr const char* kUsage = R"(Usage: tum2rawlog --in DIR --out FILE.rawlog [options]
+       tum2rawlog -h | --help
 
 Converts a TUM RGB-D sequence folder (rgb.txt, depth.txt, rgb/, depth/, optional
 accelerometer.txt and groundtruth.txt) into an MRPT rawlog of CObservation3DRangeScan
@@ -41,7 +42,13 @@ Options:
                       intrinsics (all four together) instead of the folder-name defaults
   --max-diff S        colour/depth association tolerance in seconds (default 0.02)
   --embed-images      store colour pixels inside the rawlog instead of <stem>_Images/
-  --help              this text
+  -h, --help          print this text and exit
+
+Outputs: FILE.rawlog, <stem>_Images/ (the colour images, as in the sequence), <stem>.gt.tum
+(a copy of groundtruth.txt, when the folder has one). It prints the intrinsics used, the pairs
+associated and dropped, and the observations written.
+Exit codes: 0 written, 1 bad input (a missing or malformed list or image; no rawlog is left
+behind), 2 usage.
 )";
 
 constexpr double kTumDepthUnits = 1.0 / 5000.0;
@@ -73,6 +80,58 @@ struct Event {
   size_t index;  // into the association pairs or the accelerometer samples
 };
 
+/// The sequence's lists, read.
+struct TumInput {
+  std::vector<tum::ImageEntry> colour, depth;
+  std::vector<tum::AccelerometerSample> acc;
+};
+
+/// Camera pairs and accelerometer samples in stamp order. Stable: at equal stamps cameras stay
+/// before IMU samples, each in file order.
+std::vector<Event> timeOrdered(const TumInput& in, const Association& association) {
+  std::vector<Event> events;
+  for (size_t i = 0; i < association.pairs.size(); ++i)
+    events.push_back({in.colour[association.pairs[i].first].t, true, i});
+  for (size_t i = 0; i < in.acc.size(); ++i) events.push_back({in.acc[i].t, false, i});
+  std::stable_sort(events.begin(), events.end(),
+                   [](const Event& a, const Event& b) { return a.t < b.t; });
+  return events;
+}
+
+void writeEvent(const Event& event, const TumInput& in, const Association& association,
+                const PinholeIntrinsics& intrinsics, ColourImageStore& images,
+                RawlogWriter& writer) {
+  if (!event.isCamera) {
+    const auto& s = in.acc[event.index];
+    writer.write(*makeImuObservation(mrpt::Clock::fromDouble(s.t), kImuLabel, std::nullopt, s.acc));
+    return;
+  }
+  const auto& colour = in.colour[association.pairs[event.index].first];
+  const auto& depth = in.depth[association.pairs[event.index].second];
+  RgbdFrame frame;
+  frame.timestamp = mrpt::Clock::fromDouble(colour.t);
+  frame.sensorLabel = kRgbdLabel;
+  frame.depthSourceName = depth.path;
+  if (!fs::is_regular_file(depth.path))
+    throw ConversionError("depth image " + depth.path + " does not exist");
+  frame.depth = cv::imread(depth.path, cv::IMREAD_UNCHANGED);
+  if (frame.depth.empty()) throw ConversionError("cannot read depth image " + depth.path);
+  frame.rangeUnits = static_cast<float>(kTumDepthUnits);
+  frame.intrinsics = intrinsics;
+  frame.colour = images.storeFile(colour.path, fs::path(colour.path).stem().string());
+  writer.write(*makeRgbdObservation(frame));
+}
+
+/// groundtruth.txt, when the folder has one, to <stem>.gt.tum.
+void copyGroundTruth(const std::string& inDir, const RawlogOutputPaths& out) {
+  const fs::path groundTruth = fs::path(inDir) / "groundtruth.txt";
+  if (!fs::exists(groundTruth)) return;
+  std::error_code ec;
+  fs::copy_file(groundTruth, out.groundTruth, fs::copy_options::overwrite_existing, ec);
+  if (ec) throw ConversionError("cannot copy " + groundTruth.string() + ": " + ec.message());
+  std::cout << "ground truth: " << out.groundTruth << "\n";
+}
+
 int convert(const CommandLine& args) {
   const std::string inDir = args.required("--in");
   if (!fs::is_directory(inDir)) throw ConversionError("input folder " + inDir + " does not exist");
@@ -80,62 +139,27 @@ int convert(const CommandLine& args) {
   const double maxDiff = args.optionalDouble("--max-diff").value_or(0.02);
   const PinholeIntrinsics intrinsics = chooseIntrinsics(args, inDir);
 
-  const auto colourList = tum::readImageList(inDir, "rgb.txt");
-  const auto depthList = tum::readImageList(inDir, "depth.txt");
-  const auto accSamples = tum::readAccelerometer((fs::path(inDir) / "accelerometer.txt").string());
-
+  TumInput in;
+  in.colour = tum::readImageList(inDir, "rgb.txt");
+  in.depth = tum::readImageList(inDir, "depth.txt");
+  in.acc = tum::readAccelerometer((fs::path(inDir) / "accelerometer.txt").string());
   std::vector<double> colourStamps, depthStamps;
-  for (const auto& e : colourList) colourStamps.push_back(e.t);
-  for (const auto& e : depthList) depthStamps.push_back(e.t);
+  for (const auto& e : in.colour) colourStamps.push_back(e.t);
+  for (const auto& e : in.depth) depthStamps.push_back(e.t);
   const Association association = associateNearest(colourStamps, depthStamps, maxDiff);
   std::cout << "associated " << association.pairs.size() << " colour/depth pairs; dropped "
             << association.unmatchedFirst << " colour and " << association.unmatchedSecond
             << " depth frames without a partner within " << maxDiff << " s\n";
 
-  std::vector<Event> events;
-  for (size_t i = 0; i < association.pairs.size(); ++i)
-    events.push_back({colourList[association.pairs[i].first].t, true, i});
-  for (size_t i = 0; i < accSamples.size(); ++i) events.push_back({accSamples[i].t, false, i});
-  // Stable: at equal stamps cameras stay before IMU samples, each in file order.
-  std::stable_sort(events.begin(), events.end(),
-                   [](const Event& a, const Event& b) { return a.t < b.t; });
-
   ColourImageStore images(
       args.has("--embed-images") ? ImageStorage::Embedded : ImageStorage::External, out.imagesDir);
   RawlogWriter writer(out.rawlog);
-  for (const Event& event : events) {
-    if (!event.isCamera) {
-      const auto& s = accSamples[event.index];
-      writer.write(
-          *makeImuObservation(mrpt::Clock::fromDouble(s.t), kImuLabel, std::nullopt, s.acc));
-      continue;
-    }
-    const auto& colour = colourList[association.pairs[event.index].first];
-    const auto& depth = depthList[association.pairs[event.index].second];
-    RgbdFrame frame;
-    frame.timestamp = mrpt::Clock::fromDouble(colour.t);
-    frame.sensorLabel = kRgbdLabel;
-    frame.depthSourceName = depth.path;
-    if (!fs::is_regular_file(depth.path))
-      throw ConversionError("depth image " + depth.path + " does not exist");
-    frame.depth = cv::imread(depth.path, cv::IMREAD_UNCHANGED);
-    if (frame.depth.empty()) throw ConversionError("cannot read depth image " + depth.path);
-    frame.rangeUnits = static_cast<float>(kTumDepthUnits);
-    frame.intrinsics = intrinsics;
-    frame.colour = images.storeFile(colour.path, fs::path(colour.path).stem().string());
-    writer.write(*makeRgbdObservation(frame));
-  }
+  for (const Event& event : timeOrdered(in, association))
+    writeEvent(event, in, association, intrinsics, images, writer);
   writer.close();
-
-  const fs::path groundTruth = fs::path(inDir) / "groundtruth.txt";
-  if (fs::exists(groundTruth)) {
-    std::error_code ec;
-    fs::copy_file(groundTruth, out.groundTruth, fs::copy_options::overwrite_existing, ec);
-    if (ec) throw ConversionError("cannot copy " + groundTruth.string() + ": " + ec.message());
-    std::cout << "ground truth: " << out.groundTruth << "\n";
-  }
+  copyGroundTruth(inDir, out);
   std::cout << "wrote " << writer.written() << " observations (" << association.pairs.size() << " "
-            << kRgbdLabel << ", " << accSamples.size() << " " << kImuLabel << ") to " << out.rawlog
+            << kRgbdLabel << ", " << in.acc.size() << " " << kImuLabel << ") to " << out.rawlog
             << "\n";
   return 0;
 }

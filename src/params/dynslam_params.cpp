@@ -8,11 +8,19 @@
 
 namespace {
 const char* kUsage = R"(usage: dynslam-params [--out FILE]
+       dynslam-params -h | --help
 
 Prints every ini key of the runner's sections, of every registered stage and of dynslam-sim's
-scenario files, with its default and meaning, as markdown (the page docs/parameters.md; the
-test ParameterReference fails when that file differs from what this prints). Regenerate it with
+scenario files, with its default, the values it accepts and its meaning, as markdown: the page
+docs/parameters.md (the test ParameterReference fails when that file differs from what this
+prints). Regenerate it with
   build/bin/dynslam-params --out docs/parameters.md
+
+Options:
+  --out FILE    write the page to FILE instead of stdout
+  -h, --help    print this text and exit
+
+Exit codes: 0 written, 1 FILE cannot be written, 2 usage.
 )";
 }  // namespace
 

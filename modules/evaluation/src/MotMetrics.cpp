@@ -62,84 +62,120 @@ std::vector<std::pair<int, int>> matchFrame(const MotFrame& f, double minIou,
   return matches;
 }
 
+/// Accumulates the counts of evaluateMot frame by frame.
+class MotAccumulator {
+ public:
+  explicit MotAccumulator(double min_iou) : minIou_(min_iou) {}
+
+  void add(const MotFrame& f) {
+    const auto matches = matchFrame(f, minIou_, history_);
+    Marks marks{std::vector<char>(f.truth.size(), 0), std::vector<char>(f.hypotheses.size(), 0),
+                std::vector<char>(f.hypotheses.size(), 0)};
+    countMatches(f, matches, marks);
+    countTruth(f, marks);
+    countHypotheses(f, marks);
+    countIdentityPairs(f, marks);
+  }
+
+  MotResult result(size_t frames) {
+    r_.frames = frames;
+    if (r_.truth_boxes == 0)
+      throw EvaluationError("evaluateMot: no counted ground-truth box, MOTA is undefined");
+    r_.mota = 1.0 - double(r_.misses + r_.false_positives + r_.id_switches) / r_.truth_boxes;
+    r_.motp = r_.matches ? iouSum_ / r_.matches : 0.0;
+    r_.truth_ids = truthIndex_.size();
+    r_.hypothesis_ids = hypIndex_.size();
+    Eigen::MatrixXd overlap = Eigen::MatrixXd::Zero(r_.truth_ids, r_.hypothesis_ids);
+    for (const auto& [ids, count] : pairFrames_)
+      overlap(truthIndex_.at(ids.first), hypIndex_.at(ids.second)) = double(count);
+    const std::vector<int> assigned = core::solveMaxGainAssignment(overlap);
+    for (size_t t = 0; t < assigned.size(); ++t)
+      if (assigned[t] >= 0) r_.idtp += size_t(overlap(t, assigned[t]));
+    r_.idfn = r_.truth_boxes - r_.idtp;
+    r_.idfp = r_.hypothesis_boxes - r_.idtp;
+    r_.idf1 = 2.0 * r_.idtp / double(r_.truth_boxes + r_.hypothesis_boxes);
+    r_.idp = r_.hypothesis_boxes ? double(r_.idtp) / r_.hypothesis_boxes : 0.0;
+    r_.idr = double(r_.idtp) / r_.truth_boxes;
+    return r_;
+  }
+
+ private:
+  /// Per box of one frame: matched (truth, hypothesis), ignored (a hypothesis matched to a
+  /// truth box that does not count).
+  struct Marks {
+    std::vector<char> truthMatched, hypMatched, hypIgnored;
+  };
+
+  void countMatches(const MotFrame& f, const std::vector<std::pair<int, int>>& matches, Marks& m) {
+    for (const auto& [t, h] : matches) {
+      const MotTruthBox& truth = f.truth[t];
+      TruthHistory& th = history_[truth.id];
+      th.last_hypothesis = f.hypotheses[h].id;
+      m.truthMatched[t] = m.hypMatched[h] = 1;
+      if (!truth.counted) {
+        m.hypIgnored[h] = 1;
+        ++r_.ignored_hypotheses;
+        continue;
+      }
+      ++r_.matches;
+      iouSum_ += iou(truth.box, f.hypotheses[h].box);
+      if (th.last_counted_hypothesis >= 0 && th.last_counted_hypothesis != f.hypotheses[h].id)
+        ++r_.id_switches;
+      th.last_counted_hypothesis = f.hypotheses[h].id;
+      if (th.interrupted) ++r_.fragmentations;
+      th.tracked = true;
+      th.interrupted = false;
+    }
+  }
+
+  void countTruth(const MotFrame& f, const Marks& m) {
+    for (size_t t = 0; t < f.truth.size(); ++t) {
+      if (!f.truth[t].counted) continue;
+      ++r_.truth_boxes;
+      truthIndex_.emplace(f.truth[t].id, int(truthIndex_.size()));
+      if (!m.truthMatched[t]) {
+        ++r_.misses;
+        TruthHistory& th = history_[f.truth[t].id];
+        if (th.tracked) th.interrupted = true;
+      }
+    }
+  }
+
+  void countHypotheses(const MotFrame& f, const Marks& m) {
+    for (size_t h = 0; h < f.hypotheses.size(); ++h) {
+      if (m.hypIgnored[h]) continue;
+      ++r_.hypothesis_boxes;
+      hypIndex_.emplace(f.hypotheses[h].id, int(hypIndex_.size()));
+      if (!m.hypMatched[h]) ++r_.false_positives;
+    }
+  }
+
+  /// Identity: every (counted truth, kept hypothesis) pair that may match in this frame.
+  void countIdentityPairs(const MotFrame& f, const Marks& m) {
+    for (const auto& t : f.truth) {
+      if (!t.counted) continue;
+      for (size_t h = 0; h < f.hypotheses.size(); ++h)
+        if (!m.hypIgnored[h] && iou(t.box, f.hypotheses[h].box) >= minIou_)
+          ++pairFrames_[{t.id, f.hypotheses[h].id}];
+    }
+  }
+
+  const double minIou_;
+  MotResult r_;
+  std::map<int, TruthHistory> history_;
+  std::map<int, int> truthIndex_, hypIndex_;          // id -> row/column of the identity matrix
+  std::map<std::pair<int, int>, size_t> pairFrames_;  // (truth id, hyp id) -> frames they match
+  double iouSum_ = 0;
+};
+
 }  // namespace
 
 MotResult evaluateMot(const std::vector<MotFrame>& frames, const MotOptions& options) {
   if (!(options.min_iou > 0 && options.min_iou <= 1))
     throw EvaluationError("evaluateMot: min_iou must be in (0, 1]");
-  MotResult r;
-  r.frames = frames.size();
-  std::map<int, TruthHistory> history;
-  std::map<int, int> truthIndex, hypIndex;           // id -> row/column of the identity matrix
-  std::map<std::pair<int, int>, size_t> pairFrames;  // (truth id, hyp id) -> frames they match
-  double iouSum = 0;
-
-  for (const MotFrame& f : frames) {
-    const auto matches = matchFrame(f, options.min_iou, history);
-    std::vector<char> truthMatched(f.truth.size(), 0), hypIgnored(f.hypotheses.size(), 0);
-    std::vector<char> hypMatched(f.hypotheses.size(), 0);
-    for (const auto& [t, h] : matches) {
-      const MotTruthBox& truth = f.truth[t];
-      TruthHistory& th = history[truth.id];
-      th.last_hypothesis = f.hypotheses[h].id;
-      truthMatched[t] = hypMatched[h] = 1;
-      if (!truth.counted) {
-        hypIgnored[h] = 1;
-        ++r.ignored_hypotheses;
-        continue;
-      }
-      ++r.matches;
-      iouSum += iou(truth.box, f.hypotheses[h].box);
-      if (th.last_counted_hypothesis >= 0 && th.last_counted_hypothesis != f.hypotheses[h].id)
-        ++r.id_switches;
-      th.last_counted_hypothesis = f.hypotheses[h].id;
-      if (th.interrupted) ++r.fragmentations;
-      th.tracked = true;
-      th.interrupted = false;
-    }
-    for (size_t t = 0; t < f.truth.size(); ++t) {
-      if (!f.truth[t].counted) continue;
-      ++r.truth_boxes;
-      truthIndex.emplace(f.truth[t].id, int(truthIndex.size()));
-      if (!truthMatched[t]) {
-        ++r.misses;
-        TruthHistory& th = history[f.truth[t].id];
-        if (th.tracked) th.interrupted = true;
-      }
-    }
-    for (size_t h = 0; h < f.hypotheses.size(); ++h) {
-      if (hypIgnored[h]) continue;
-      ++r.hypothesis_boxes;
-      hypIndex.emplace(f.hypotheses[h].id, int(hypIndex.size()));
-      if (!hypMatched[h]) ++r.false_positives;
-    }
-    // Identity: every (counted truth, kept hypothesis) pair that may match in this frame.
-    for (const auto& t : f.truth) {
-      if (!t.counted) continue;
-      for (size_t h = 0; h < f.hypotheses.size(); ++h)
-        if (!hypIgnored[h] && iou(t.box, f.hypotheses[h].box) >= options.min_iou)
-          ++pairFrames[{t.id, f.hypotheses[h].id}];
-    }
-  }
-  if (r.truth_boxes == 0)
-    throw EvaluationError("evaluateMot: no counted ground-truth box, MOTA is undefined");
-
-  r.mota = 1.0 - double(r.misses + r.false_positives + r.id_switches) / r.truth_boxes;
-  r.motp = r.matches ? iouSum / r.matches : 0.0;
-  r.truth_ids = truthIndex.size();
-  r.hypothesis_ids = hypIndex.size();
-  Eigen::MatrixXd overlap = Eigen::MatrixXd::Zero(r.truth_ids, r.hypothesis_ids);
-  for (const auto& [ids, count] : pairFrames)
-    overlap(truthIndex.at(ids.first), hypIndex.at(ids.second)) = double(count);
-  const std::vector<int> assigned = core::solveMaxGainAssignment(overlap);
-  for (size_t t = 0; t < assigned.size(); ++t)
-    if (assigned[t] >= 0) r.idtp += size_t(overlap(t, assigned[t]));
-  r.idfn = r.truth_boxes - r.idtp;
-  r.idfp = r.hypothesis_boxes - r.idtp;
-  r.idf1 = 2.0 * r.idtp / double(r.truth_boxes + r.hypothesis_boxes);
-  r.idp = r.hypothesis_boxes ? double(r.idtp) / r.hypothesis_boxes : 0.0;
-  r.idr = double(r.idtp) / r.truth_boxes;
-  return r;
+  MotAccumulator accumulator(options.min_iou);
+  for (const MotFrame& f : frames) accumulator.add(f);
+  return accumulator.result(frames.size());
 }
 
 }  // namespace dynslam::evaluation

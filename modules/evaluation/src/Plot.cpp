@@ -230,9 +230,10 @@ void writePng(const std::string& path, const cv::Mat& img) {
   if (!written) throw EvaluationError("cannot write plot '" + path + "'");
 }
 
-}  // namespace
+constexpr int kBarChartHeight = 560, kLegendRow = 20;
 
-void writeBarChartPng(const std::string& path, const BarChartInput& in) {
+/// Checks the table's shape and values; returns the largest value (1 when none is > 0).
+double barChartTop(const BarChartInput& in) {
   if (in.groups.empty() || in.series.empty())
     throw EvaluationError("bar chart: no group or no series to draw");
   if (in.series.size() > std::size(kSeriesColours))
@@ -254,9 +255,57 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
         top = std::max(top, v);
       }
   }
-  if (!(top > 0)) top = 1;
+  return top > 0 ? top : 1;
+}
 
-  constexpr int kBarChartHeight = 560, kLegendRow = 20;
+/// Group g's bars with their values above them, and its name (wrapped) below the baseline.
+void drawBarGroup(cv::Mat& img, const BarChartInput& in, std::size_t g, const Axis& x,
+                  const Axis& y, int group_px, int bar_px) {
+  const int left = x.px_lo + static_cast<int>(g) * group_px +
+                   (group_px - bar_px * static_cast<int>(in.series.size())) / 2;
+  for (std::size_t k = 0; k < in.series.size(); ++k) {
+    const double v = in.values[g][k];
+    const int bx = left + static_cast<int>(k) * bar_px;
+    if (!std::isfinite(v)) {  // a missing value: no bar, a dash on the baseline
+      putLabel(img, "-", {bx + (bar_px - textWidth("-")) / 2, y.px_lo - 4});
+      continue;
+    }
+    const int py = static_cast<int>(std::lround(y.toPixel(v)));
+    cv::rectangle(img, cv::Point(bx + 1, py), cv::Point(bx + bar_px - 2, y.px_lo - 1),
+                  kSeriesColours[k], cv::FILLED);
+    char label[32];
+    std::snprintf(label, sizeof label, "%.3g", v);
+    const double scale = textWidth(label, 0.4) <= bar_px - 2 ? 0.4 : 0.32;
+    // A label wider than its bar would run into its neighbour's: every other one goes a line up.
+    const int lift = textWidth(label, scale) > bar_px - 2 && k % 2 == 1 ? 12 : 0;
+    putLabel(img, label, {bx + (bar_px - textWidth(label, scale)) / 2, py - 4 - lift}, scale);
+  }
+  const auto lines = fitLabel(in.groups[g], group_px - 6);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const int centre = x.px_lo + static_cast<int>(g) * group_px + group_px / 2;
+    putLabel(img, lines[l],
+             {centre - textWidth(lines[l]) / 2, y.px_lo + 20 + 18 * static_cast<int>(l)});
+  }
+}
+
+/// Legend in the upper right corner, above the bars.
+void drawBarLegend(cv::Mat& img, const BarChartInput& in, const Axis& x, int plot_top,
+                   int legend_height) {
+  int legend_width = 0;
+  for (const auto& name : in.series) legend_width = std::max(legend_width, textWidth(name));
+  const cv::Rect box(x.px_hi - legend_width - 50, plot_top, legend_width + 40, legend_height - 6);
+  cv::rectangle(img, box, kBlack, 1);
+  for (std::size_t k = 0; k < in.series.size(); ++k) {
+    const int row = box.y + 6 + kLegendRow * static_cast<int>(k);
+    cv::rectangle(img, cv::Rect(box.x + 8, row + 2, 12, 12), kSeriesColours[k], cv::FILLED);
+    putLabel(img, in.series[k], {box.x + 28, row + 13});
+  }
+}
+
+}  // namespace
+
+void writeBarChartPng(const std::string& path, const BarChartInput& in) {
+  const double top = barChartTop(in);
   const int legend_height = kLegendRow * static_cast<int>(in.series.size()) + 10;
   cv::Mat img(kTitleHeight + kBarChartHeight, kWidth, CV_8UC3, kWhite);
   putLabel(img, in.title, {kMarginLeft, 28}, 0.6, kBlack, 1);
@@ -269,43 +318,9 @@ void writeBarChartPng(const std::string& path, const BarChartInput& in) {
 
   const int group_px = (x.px_hi - x.px_lo) / static_cast<int>(in.groups.size());
   const int bar_px = std::max(2, group_px * 4 / 5 / static_cast<int>(in.series.size()));
-  for (std::size_t g = 0; g < in.groups.size(); ++g) {
-    const int left = x.px_lo + static_cast<int>(g) * group_px +
-                     (group_px - bar_px * static_cast<int>(in.series.size())) / 2;
-    for (std::size_t k = 0; k < in.series.size(); ++k) {
-      const double v = in.values[g][k];
-      const int bx = left + static_cast<int>(k) * bar_px;
-      if (!std::isfinite(v)) {  // a missing value: no bar, a dash on the baseline
-        putLabel(img, "-", {bx + (bar_px - textWidth("-")) / 2, y.px_lo - 4});
-        continue;
-      }
-      const int py = static_cast<int>(std::lround(y.toPixel(v)));
-      cv::rectangle(img, cv::Point(bx + 1, py), cv::Point(bx + bar_px - 2, y.px_lo - 1),
-                    kSeriesColours[k], cv::FILLED);
-      char label[32];
-      std::snprintf(label, sizeof label, "%.3g", v);
-      const double scale = textWidth(label, 0.4) <= bar_px - 2 ? 0.4 : 0.32;
-      // A label wider than its bar would run into its neighbour's: every other one goes a line up.
-      const int lift = textWidth(label, scale) > bar_px - 2 && k % 2 == 1 ? 12 : 0;
-      putLabel(img, label, {bx + (bar_px - textWidth(label, scale)) / 2, py - 4 - lift}, scale);
-    }
-    const auto lines = fitLabel(in.groups[g], group_px - 6);
-    for (std::size_t l = 0; l < lines.size(); ++l) {
-      const int centre = x.px_lo + static_cast<int>(g) * group_px + group_px / 2;
-      putLabel(img, lines[l],
-               {centre - textWidth(lines[l]) / 2, y.px_lo + 20 + 18 * static_cast<int>(l)});
-    }
-  }
-  // Legend in the upper right corner, above the bars.
-  int legend_width = 0;
-  for (const auto& name : in.series) legend_width = std::max(legend_width, textWidth(name));
-  const cv::Rect box(x.px_hi - legend_width - 50, plot_top, legend_width + 40, legend_height - 6);
-  cv::rectangle(img, box, kBlack, 1);
-  for (std::size_t k = 0; k < in.series.size(); ++k) {
-    const int row = box.y + 6 + kLegendRow * static_cast<int>(k);
-    cv::rectangle(img, cv::Rect(box.x + 8, row + 2, 12, 12), kSeriesColours[k], cv::FILLED);
-    putLabel(img, in.series[k], {box.x + 28, row + 13});
-  }
+  for (std::size_t g = 0; g < in.groups.size(); ++g)
+    drawBarGroup(img, in, g, x, y, group_px, bar_px);
+  drawBarLegend(img, in, x, plot_top, legend_height);
   writePng(path, img);
 }
 

@@ -2,73 +2,54 @@
 
 #include <dynslam/core/Config.h>
 
-#include <mrpt/config/CConfigFileBase.h>
-
-#include <sstream>
+#include <stdexcept>
 
 namespace dynslam::sim {
 
-// Every key is documented in AugmentOptions.h and, one line each, in the saved ini below.
-void AugmentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                        const std::string& s) {
-  MRPT_LOAD_CONFIG_VAR(rawlog, string, c, s);       // relative: against the working directory
-  MRPT_LOAD_CONFIG_VAR(groundtruth, string, c, s);  // empty: <rawlog stem>.gt.tum
-  MRPT_LOAD_CONFIG_VAR(knot_interval, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(floor_frames, int, c, s);
-  MRPT_LOAD_CONFIG_VAR(floor_pixel_step, int, c, s);
-  MRPT_LOAD_CONFIG_VAR(floor_max_depth, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(floor_inlier_distance, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(floor_ransac_iterations, int, c, s);
-  MRPT_LOAD_CONFIG_VAR(floor_max_tilt_deg, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(map_cell, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(obstacle_height, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(clearance, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(region_radius, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(min_walk_length, double, c, s);
-  MRPT_LOAD_CONFIG_VAR(camera_clearance, double, c, s);
-}
-
-void AugmentOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                      const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(rawlog, "sevenscenes2rawlog output (relative: working directory)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(groundtruth, "TUM ground truth; empty: <rawlog stem>.gt.tum");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(knot_interval, "s between control points of the IMU spline");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(floor_frames, "frames sampled for the floor and the free floor");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(floor_pixel_step, "every n-th pixel in x and y");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(floor_max_depth, "m; farther depth is too noisy for the floor");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(floor_inlier_distance, "m; RANSAC inlier distance");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(floor_ransac_iterations, "RANSAC draws");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(floor_max_tilt_deg, "deg between the floor and the cameras' up");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(map_cell, "m; cell of the free-floor grid");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(obstacle_height, "m above the floor from which points block");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(clearance, "m kept between agents' floor and real obstacles");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(region_radius, "m around the most-seen clear floor");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_walk_length, "m; shortest straight walk");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(camera_clearance, "m kept between agents and the camera");
+void AugmentOptions::describe(core::OptionVisitor& v) {
+  using core::Range;
+  const Range positive = Range::above(0), count = Range::atLeast(1), off = Range::atLeast(0);
+  v.key("rawlog", rawlog,
+        "the real sequence: a sevenscenes2rawlog output (RGB-D observations); relative paths "
+        "resolve against the working directory");
+  v.key("groundtruth", groundtruth,
+        "its ground truth (TUM, camera-to-world); empty: the rawlog's path with .rawlog replaced "
+        "by .gt.tum, the file sevenscenes2rawlog writes beside it");
+  v.key("knot_interval", knot_interval, positive,
+        "s between control points of the B-spline fitted to the ground truth for the IMU (longer "
+        "smooths more pose jitter but follows quick hand motion less closely)");
+  v.key("floor_frames", floor_frames, count,
+        "frames spread over the sequence whose depth the floor plane and the free floor are "
+        "found in");
+  v.key("floor_pixel_step", floor_pixel_step, count, "every n-th pixel in x and y");
+  v.key("floor_max_depth", floor_max_depth, positive,
+        "m; farther depth is too noisy for the floor");
+  v.key("floor_inlier_distance", floor_inlier_distance, positive, "m; RANSAC inlier distance");
+  v.key("floor_ransac_iterations", floor_ransac_iterations, count, "RANSAC draws");
+  v.key("floor_max_tilt_deg", floor_max_tilt_deg, Range{0, 90, true, true},
+        "deg between the floor's normal and the cameras' mean up (minus their image-down axis: "
+        "hand-held and robot cameras are held roughly upright)");
+  v.key("map_cell", map_cell, positive, "m; cell of the free-floor grid");
+  v.key("obstacle_height", obstacle_height, positive,
+        "m above the floor from which points block a cell (up to 2 m); a cell is clear when the "
+        "real depth showed bare floor there and nothing blocking");
+  v.key("clearance", clearance, off,
+        "m kept between the agents' floor and real obstacles (what a body keeps from a table's "
+        "edge)");
+  v.key("region_radius", region_radius, positive,
+        "m; agents use clear floor within this of the clear cell the camera sees most");
+  v.key("min_walk_length", min_walk_length, positive, "m; shortest straight clear walk");
+  v.key("camera_clearance", camera_clearance, off,
+        "m kept between every agent and the camera at every frame");
 }
 
 void AugmentOptions::validate() const {
-  const auto check = [](bool ok, const char* key, double value, const char* rule) {
-    if (ok) return;
-    std::ostringstream msg;
-    msg << "[Augment] " << key << " = " << value << ": must be " << rule;
-    throw core::ConfigError(msg.str());
-  };
   if (rawlog.empty()) throw core::ConfigError("[Augment] rawlog is empty: name the real sequence");
-  check(knot_interval > 0, "knot_interval", knot_interval, "> 0 s");
-  check(floor_frames >= 1, "floor_frames", floor_frames, ">= 1");
-  check(floor_pixel_step >= 1, "floor_pixel_step", floor_pixel_step, ">= 1");
-  check(floor_max_depth > 0, "floor_max_depth", floor_max_depth, "> 0 m");
-  check(floor_inlier_distance > 0, "floor_inlier_distance", floor_inlier_distance, "> 0 m");
-  check(floor_ransac_iterations >= 1, "floor_ransac_iterations", floor_ransac_iterations, ">= 1");
-  check(floor_max_tilt_deg > 0 && floor_max_tilt_deg < 90, "floor_max_tilt_deg", floor_max_tilt_deg,
-        "in (0, 90) deg");
-  check(map_cell > 0, "map_cell", map_cell, "> 0 m");
-  check(obstacle_height > 0, "obstacle_height", obstacle_height, "> 0 m");
-  check(clearance >= 0, "clearance", clearance, ">= 0 m");
-  check(region_radius > 0, "region_radius", region_radius, "> 0 m");
-  check(min_walk_length > 0, "min_walk_length", min_walk_length, "> 0 m");
-  check(camera_clearance >= 0, "camera_clearance", camera_clearance, ">= 0 m");
+  try {
+    check();
+  } catch (const std::invalid_argument& e) {
+    throw core::ConfigError(std::string("[Augment] ") + e.what());
+  }
 }
 
 }  // namespace dynslam::sim

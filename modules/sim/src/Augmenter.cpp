@@ -50,6 +50,34 @@ Augmenter::Augmenter(const ScenarioOptions& options) : options_(options) {
   const AugmentOptions& a = options_.augment;
   a.validate();
   rawlog_path_ = a.rawlog;
+  readRealFrames();
+  start_time_ = frames_.front().stamp;
+
+  // The depth of frames spread over the sequence: the floor, the free floor, what is seen.
+  const std::size_t count = std::clamp<std::size_t>(a.floor_frames, 1, frames_.size());
+  std::vector<std::size_t> sampled;
+  for (std::size_t j = 0; j < count; ++j)
+    sampled.push_back(count == 1 ? 0 : j * (frames_.size() - 1) / (count - 1));
+  sampled.erase(std::unique(sampled.begin(), sampled.end()), sampled.end());
+  std::vector<cv::Mat> depths;
+  std::vector<PointGrid> grids;
+  {
+    RealRgbdStream stream(rawlog_path_);
+    for (std::size_t i : sampled) {
+      const core::Frame& f = stream.frame(frames_[i].rgbd_number);
+      if (depths.empty()) camera_ = f.intrinsics;
+      depths.push_back(f.depth.clone());
+      grids.push_back(backProject(f.depth, f.intrinsics, frames_[i].T_world_camera,
+                                  std::max(1, a.floor_pixel_step), a.floor_max_depth));
+    }
+  }
+  std::mt19937_64 scene_rng(subSeed(options_.world.seed, kSceneStream));
+  findFloorAndPlaceAgents(grids, depths, sampled, scene_rng);
+  synthesizeInertialSensors();
+}
+
+void Augmenter::readRealFrames() {
+  const AugmentOptions& a = options_.augment;
   if (!fs::is_regular_file(rawlog_path_))
     throw std::runtime_error("[Augment] rawlog '" + rawlog_path_ + "' does not exist");
   const std::string gt_path = groundTruthPath(a);
@@ -76,29 +104,9 @@ Augmenter::Augmenter(const ScenarioOptions& options) : options_(options) {
                              " RGB-D frames with a pose in '" + gt_path +
                              "' (stamps within 1 ms; " + std::to_string(stamps.size()) +
                              " RGB-D observations): need 2 or more");
-  start_time_ = frames_.front().stamp;
+}
 
-  // The depth of frames spread over the sequence: the floor, the free floor, what is seen.
-  const std::size_t count = std::clamp<std::size_t>(a.floor_frames, 1, frames_.size());
-  std::vector<std::size_t> sampled;
-  for (std::size_t j = 0; j < count; ++j)
-    sampled.push_back(count == 1 ? 0 : j * (frames_.size() - 1) / (count - 1));
-  sampled.erase(std::unique(sampled.begin(), sampled.end()), sampled.end());
-  std::vector<cv::Mat> depths;
-  std::vector<PointGrid> grids;
-  {
-    RealRgbdStream stream(rawlog_path_);
-    for (std::size_t i : sampled) {
-      const core::Frame& f = stream.frame(frames_[i].rgbd_number);
-      if (depths.empty()) camera_ = f.intrinsics;
-      depths.push_back(f.depth.clone());
-      grids.push_back(backProject(f.depth, f.intrinsics, frames_[i].T_world_camera,
-                                  std::max(1, a.floor_pixel_step), a.floor_max_depth));
-    }
-  }
-  std::mt19937_64 scene_rng(subSeed(options_.world.seed, kSceneStream));
-  findFloorAndPlaceAgents(grids, depths, sampled, scene_rng);
-
+void Augmenter::synthesizeInertialSensors() {
   // IMU: a spline through the body poses (camera poses * T_camera_body) in F.
   T_body_camera_ = cameraInBody(options_.camera);
   const Eigen::Isometry3d T_camera_body = T_body_camera_.inverse();
@@ -108,7 +116,8 @@ Augmenter::Augmenter(const ScenarioOptions& options) : options_(options) {
     cameras.push_back({frameTime(i), T_floor_cam});
     body.push_back({frameTime(i), T_floor_cam * T_camera_body});
   }
-  trajectory_ = std::make_unique<SplineTrajectory>(fitSplineToPoses(body, a.knot_interval));
+  trajectory_ =
+      std::make_unique<SplineTrajectory>(fitSplineToPoses(body, options_.augment.knot_interval));
   summary_.spline_error = splineFitError(*trajectory_, cameras, T_body_camera_);
   const double end = frameTime(frames_.size() - 1);
   std::mt19937_64 imu_rng(subSeed(options_.world.seed, kImuStream));
@@ -142,7 +151,22 @@ void Augmenter::findFloorAndPlaceAgents(const std::vector<PointGrid>& grids,
   // built in it, then F moves its origin to the region centre.
   const Eigen::Isometry3d T_world_map =
       floorFrame(summary_.floor.plane, centre / frames_.size(), ahead);
-  const Eigen::Isometry3d T_map_world = T_world_map.inverse();
+  CameraTrack track;
+  const FloorMap map = buildFloorMap(grids, depths, sampled, T_world_map.inverse(), track);
+  const Eigen::Vector2d region = chooseRegionCentre(map, std::min(1.0, a.region_radius));
+  Eigen::Isometry3d T_world_floor = T_world_map;
+  T_world_floor.translation() += T_world_map.linear() * Eigen::Vector3d(region.x(), region.y(), 0);
+  T_floor_world_ = T_world_floor.inverse();
+  summary_.T_world_floor = T_world_floor;
+  summariseClearFloor(map);
+  placeAgents(map, region, track, rng);
+}
+
+FloorMap Augmenter::buildFloorMap(const std::vector<PointGrid>& grids,
+                                  const std::vector<cv::Mat>& depths,
+                                  const std::vector<std::size_t>& sampled,
+                                  const Eigen::Isometry3d& T_map_world, CameraTrack& track) const {
+  const AugmentOptions& a = options_.augment;
   FloorMapOptions map_options;
   map_options.cell = a.map_cell;
   map_options.obstacle_height = a.obstacle_height;
@@ -157,7 +181,6 @@ void Augmenter::findFloorAndPlaceAgents(const std::vector<PointGrid>& grids,
         if (std::abs(g.points[i].z()) <= map_options.floor_band)
           lo = lo.cwiseMin(g.points[i].head<2>()), hi = hi.cwiseMax(g.points[i].head<2>());
       }
-  CameraTrack track;
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     track.t.push_back(frameTime(i));
     track.xy.push_back((T_map_world * frames_[i].T_world_camera.translation()).head<2>());
@@ -169,12 +192,10 @@ void Augmenter::findFloorAndPlaceAgents(const std::vector<PointGrid>& grids,
     map.addView(depths[j], camera_, T_map_world * frames_[sampled[j]].T_world_camera,
                 a.camera_clearance + 0.5);
   map.finish();
+  return map;
+}
 
-  const Eigen::Vector2d region = chooseRegionCentre(map, std::min(1.0, a.region_radius));
-  Eigen::Isometry3d T_world_floor = T_world_map;
-  T_world_floor.translation() += T_world_map.linear() * Eigen::Vector3d(region.x(), region.y(), 0);
-  T_floor_world_ = T_world_floor.inverse();
-  summary_.T_world_floor = T_world_floor;
+void Augmenter::summariseClearFloor(const FloorMap& map) {
   Eigen::Vector2d clear_lo(1e9, 1e9), clear_hi(-1e9, -1e9);
   for (int r = 0; r < map.rows(); ++r)
     for (int c = 0; c < map.cols(); ++c)
@@ -184,8 +205,12 @@ void Augmenter::findFloorAndPlaceAgents(const std::vector<PointGrid>& grids,
         clear_hi = clear_hi.cwiseMax(map.cellCentre(r, c));
       }
   summary_.region_extent_m =
-      (clear_hi - clear_lo).cwiseMax(0.0) + Eigen::Vector2d::Constant(a.map_cell);
+      (clear_hi - clear_lo).cwiseMax(0.0) + Eigen::Vector2d::Constant(options_.augment.map_cell);
+}
 
+void Augmenter::placeAgents(const FloorMap& map, const Eigen::Vector2d& region,
+                            const CameraTrack& track, std::mt19937_64& rng) {
+  const AugmentOptions& a = options_.augment;
   FloorPlanOptions plan;
   plan.region_radius = a.region_radius;
   plan.min_walk_length = a.min_walk_length;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -71,34 +72,41 @@ PointGrid backProject(const cv::Mat& depth, const core::CameraIntrinsics& k,
   return grid;
 }
 
-FloorFit fitFloorPlane(const std::vector<PointGrid>& grids, const Eigen::Vector3d& up_hint,
-                       const FloorFitOptions& o, std::mt19937_64& rng) {
-  std::vector<Eigen::Vector3d> points;
-  for (const auto& g : grids)
-    for (std::size_t i = 0; i < g.points.size(); ++i)
-      if (g.valid[i]) points.push_back(g.points[i]);
-  if (points.size() < 100 || grids.empty())
-    throw std::runtime_error("floor plane: only " + std::to_string(points.size()) +
-                             " valid depth points to fit it to");
-  const Eigen::Vector3d up = up_hint.normalized();
-  const double min_cos = std::cos(o.max_tilt_deg * M_PI / 180);
-  const auto pick = [&rng](int n) { return static_cast<int>(uniformReal(rng, 0, n)); };
+namespace {
 
-  std::vector<std::pair<std::size_t, Plane>> candidates;  // inliers, plane
+/// The RANSAC draws that gave a plane near enough to level with points on it, each with its
+/// inlier count.
+using PlaneCandidates = std::vector<std::pair<std::size_t, Plane>>;
+
+/// Three valid points of one grid: a random one and two within o.neighbourhood cells of it.
+bool drawTriple(const PointGrid& g, const FloorFitOptions& o, const std::function<int(int)>& pick,
+                Eigen::Vector3d (&p)[3]) {
+  const int r = pick(g.rows), c = pick(g.cols);
+  bool ok = true;
+  for (int j = 0; j < 3 && ok; ++j) {
+    const int rr = j == 0 ? r : r + pick(2 * o.neighbourhood + 1) - o.neighbourhood;
+    const int cc = j == 0 ? c : c + pick(2 * o.neighbourhood + 1) - o.neighbourhood;
+    const std::size_t i = static_cast<std::size_t>(rr) * g.cols + cc;
+    ok = rr >= 0 && rr < g.rows && cc >= 0 && cc < g.cols && g.valid[i];
+    if (ok) p[j] = g.points[i];
+  }
+  return ok;
+}
+
+PlaneCandidates drawCandidates(const std::vector<PointGrid>& grids,
+                               const std::vector<Eigen::Vector3d>& points,
+                               const Eigen::Vector3d& up, const FloorFitOptions& o,
+                               std::mt19937_64& rng) {
+  const double min_cos = std::cos(o.max_tilt_deg * M_PI / 180);
+  const std::function<int(int)> pick = [&rng](int n) {
+    return static_cast<int>(uniformReal(rng, 0, n));
+  };
+  PlaneCandidates candidates;
   std::size_t tilted = 0, table_like = 0;
   for (int it = 0; it < o.iterations; ++it) {
     const PointGrid& g = grids[pick(static_cast<int>(grids.size()))];
-    const int r = pick(g.rows), c = pick(g.cols);
     Eigen::Vector3d p[3];
-    bool ok = true;
-    for (int j = 0; j < 3 && ok; ++j) {
-      const int rr = j == 0 ? r : r + pick(2 * o.neighbourhood + 1) - o.neighbourhood;
-      const int cc = j == 0 ? c : c + pick(2 * o.neighbourhood + 1) - o.neighbourhood;
-      const std::size_t i = static_cast<std::size_t>(rr) * g.cols + cc;
-      ok = rr >= 0 && rr < g.rows && cc >= 0 && cc < g.cols && g.valid[i];
-      if (ok) p[j] = g.points[i];
-    }
-    if (!ok) continue;
+    if (!drawTriple(g, o, pick, p)) continue;
     Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
     if (n.norm() < 1e-4) continue;  // (nearly) collinear
     n.normalize();
@@ -123,13 +131,18 @@ FloorFit fitFloorPlane(const std::vector<PointGrid>& grids, const Eigen::Vector3
         << o.max_below_fraction * 100 << " % of the points below them";
     throw std::runtime_error(msg.str());
   }
-  // The best few candidates, each refined coarse to fine (a wide band first pulls a plane that
-  // three noisy points tilted by a degree or so onto the floor around it); the refined plane
-  // with the most inliers wins, so the result hardly depends on the random draws.
+  return candidates;
+}
+
+/// The best few candidates, each refined coarse to fine (a wide band first pulls a plane that
+/// three noisy points tilted by a degree or so onto the floor around it); the refined plane
+/// with the most inliers wins, so the result hardly depends on the random draws.
+Plane refineBest(PlaneCandidates& candidates, const std::vector<Eigen::Vector3d>& points,
+                 const FloorFitOptions& o) {
   const std::size_t kept = std::min<std::size_t>(8, candidates.size());
   std::partial_sort(candidates.begin(), candidates.begin() + kept, candidates.end(),
                     [](const auto& a, const auto& b) { return a.first > b.first; });
-  FloorFit fit;
+  Plane best;
   std::size_t most = 0;
   for (std::size_t c = 0; c < kept; ++c) {
     Plane plane = candidates[c].second;
@@ -137,9 +150,26 @@ FloorFit fitFloorPlane(const std::vector<PointGrid>& grids, const Eigen::Vector3
       plane = refine(plane, points, band * o.inlier_distance);
     const Score s = score(plane, points, o.inlier_distance, o.below_margin);
     if (s.inliers > most && s.below <= o.max_below_fraction * points.size())
-      fit.plane = plane, most = s.inliers;
+      best = plane, most = s.inliers;
   }
-  if (most == 0) fit.plane = candidates.front().second;  // refining made every one table-like
+  if (most == 0) best = candidates.front().second;  // refining made every one table-like
+  return best;
+}
+
+}  // namespace
+
+FloorFit fitFloorPlane(const std::vector<PointGrid>& grids, const Eigen::Vector3d& up_hint,
+                       const FloorFitOptions& o, std::mt19937_64& rng) {
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& g : grids)
+    for (std::size_t i = 0; i < g.points.size(); ++i)
+      if (g.valid[i]) points.push_back(g.points[i]);
+  if (points.size() < 100 || grids.empty())
+    throw std::runtime_error("floor plane: only " + std::to_string(points.size()) +
+                             " valid depth points to fit it to");
+  PlaneCandidates candidates = drawCandidates(grids, points, up_hint.normalized(), o, rng);
+  FloorFit fit;
+  fit.plane = refineBest(candidates, points, o);
   fit.points = points.size();
   double sum_squares = 0;
   for (const auto& p : points) {

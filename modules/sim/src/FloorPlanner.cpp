@@ -112,58 +112,91 @@ struct PeoplePlan {
   int walker_without_chord = -1;  ///< >= 0: this walker found no chord at all
 };
 
-PeoplePlan planPeopleOnce(const PeopleOptions& people, const FloorMap& map,
-                          const std::vector<Eigen::Vector2d>& cells, const Eigen::Vector2d& centre,
-                          const CameraTrack& camera, const FloorPlanOptions& o, int restart,
-                          std::mt19937_64& rng) {
-  const double R = o.region_radius;
-  const auto pick = [&] { return cells[static_cast<size_t>(uniformReal(rng, 0, cells.size()))]; };
-  const double base = uniformReal(rng, 0, M_PI);
-  PeoplePlan plan;
-  plan.score = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < people.walkers; ++i) {
-    std::vector<std::pair<FloorPath, double>> candidates;  // with their scores
+/// planPeopleOnce's steps, sharing what every step reads.
+class PeoplePlanner {
+ public:
+  PeoplePlanner(const PeopleOptions& people, const FloorMap& map,
+                const std::vector<Eigen::Vector2d>& cells, const Eigen::Vector2d& centre,
+                const CameraTrack& camera, const FloorPlanOptions& o, std::mt19937_64& rng)
+      : people_(people),
+        map_(map),
+        cells_(cells),
+        centre_(centre),
+        camera_(camera),
+        o_(o),
+        rng_(rng) {}
+
+  PeoplePlan plan(int restart) {
+    const double base = uniformReal(rng_, 0, M_PI);
+    PeoplePlan plan;
+    plan.score = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < people_.walkers; ++i) {
+      auto candidates = walkerCandidates(i, base, plan);
+      if (candidates.empty()) {
+        plan.walker_without_chord = i;
+        return plan;
+      }
+      const auto& chosen = choose(candidates, restart);
+      plan.score = std::min(plan.score, chosen.second);
+      plan.paths.push_back(chosen.first);
+    }
+    for (int j = 0; j < people_.standing; ++j) addStanding(plan);
+    return plan;
+  }
+
+ private:
+  using Candidate = std::pair<FloorPath, double>;  // with its score
+
+  Eigen::Vector2d pick() {
+    return cells_[static_cast<size_t>(uniformReal(rng_, 0, cells_.size()))];
+  }
+
+  /// Walker i's possible paths: first the mode's own layout around the centre, then any chord
+  /// through the region.
+  std::vector<Candidate> walkerCandidates(int i, double base, PeoplePlan& plan) {
+    const double R = o_.region_radius;
+    std::vector<Candidate> candidates;
     for (int attempt = 0; attempt < 60; ++attempt) {
-      // First the mode's own layout around the centre, then any chord through the region.
       double angle;
       Eigen::Vector2d through;
-      if (attempt < 20 && people.interaction == "high") {
-        angle = base + M_PI * i / people.walkers + uniformReal(rng, -0.2, 0.2);
-        through = centre + left(unit(angle)) * uniformReal(rng, -0.3, 0.3);
+      if (attempt < 20 && people_.interaction == "high") {
+        angle = base + M_PI * i / people_.walkers + uniformReal(rng_, -0.2, 0.2);
+        through = centre_ + left(unit(angle)) * uniformReal(rng_, -0.3, 0.3);
       } else if (attempt < 20) {
-        angle = base + (attempt > 0 ? uniformReal(rng, -0.1, 0.1) : 0.0);
-        const double lane = std::clamp((i - (people.walkers - 1) / 2.0) * 0.9, -0.8 * R, 0.8 * R);
-        through = centre + left(unit(angle)) * (lane + uniformReal(rng, -0.1, 0.1));
+        angle = base + (attempt > 0 ? uniformReal(rng_, -0.1, 0.1) : 0.0);
+        const double lane = std::clamp((i - (people_.walkers - 1) / 2.0) * 0.9, -0.8 * R, 0.8 * R);
+        through = centre_ + left(unit(angle)) * (lane + uniformReal(rng_, -0.1, 0.1));
       } else {
-        angle = uniformReal(rng, 0, M_PI);
+        angle = uniformReal(rng_, 0, M_PI);
         through = pick();
       }
-      if (!map.isClear(through)) continue;
+      if (!map_.isClear(through)) continue;
       const Eigen::Vector2d dir = unit(angle);
-      double ahead = map.clearRun(through, dir, R), behind = map.clearRun(through, -dir, R);
+      double ahead = map_.clearRun(through, dir, R), behind = map_.clearRun(through, -dir, R);
       plan.longest_chord = std::max(plan.longest_chord, ahead + behind);
-      if (ahead + behind < o.min_walk_length) continue;
+      if (ahead + behind < o_.min_walk_length) continue;
       if (attempt >= 20 && attempt % 2 == 1) {
         // Part of the chord only: on a narrow floor, walkers pacing different stretches of one
         // aisle keep apart where whole chords would make them walk through each other.
-        const double length = uniformReal(rng, o.min_walk_length, ahead + behind);
-        const double start = uniformReal(rng, 0, ahead + behind - length);  // from the back end
+        const double length = uniformReal(rng_, o_.min_walk_length, ahead + behind);
+        const double start = uniformReal(rng_, 0, ahead + behind - length);  // from the back end
         ahead = length + start - behind;
         behind = behind - start;
       }
       const Eigen::Vector2d a = through - behind * dir, b = through + ahead * dir;
-      FloorPath path({a - centre, b - centre}, people.speed,
-                     uniformReal(rng, 0, 2 * (ahead + behind)), FloorPath::Mode::BackAndForth,
-                     o.turn_length);
+      FloorPath path({a - centre_, b - centre_}, people_.speed,
+                     uniformReal(rng_, 0, 2 * (ahead + behind)), FloorPath::Mode::BackAndForth,
+                     o_.turn_length);
       const double score =
-          candidateScore(cameraDistance(path, camera, centre), o.camera_clearance,
-                         pathDistance(path, plan.paths, camera.t), o.separation, ahead + behind);
+          candidateScore(cameraDistance(path, camera_, centre_), o_.camera_clearance,
+                         pathDistance(path, plan.paths, camera_.t), o_.separation, ahead + behind);
       candidates.emplace_back(std::move(path), score);
     }
-    if (candidates.empty()) {
-      plan.walker_without_chord = i;
-      return plan;
-    }
+    return candidates;
+  }
+
+  /// The best candidate; on a restart, a random one of those that keep every distance.
+  const Candidate& choose(const std::vector<Candidate>& candidates, int restart) {
     auto chosen = std::max_element(candidates.begin(), candidates.end(),
                                    [](auto& x, auto& y) { return x.second < y.second; });
     if (restart > 0 && chosen->second >= 1e3) {
@@ -171,26 +204,40 @@ PeoplePlan planPeopleOnce(const PeopleOptions& people, const FloorMap& map,
       for (size_t c = 0; c < candidates.size(); ++c)
         if (candidates[c].second >= 1e3) keeping.push_back(c);
       chosen =
-          candidates.begin() + keeping[static_cast<size_t>(uniformReal(rng, 0, keeping.size()))];
+          candidates.begin() + keeping[static_cast<size_t>(uniformReal(rng_, 0, keeping.size()))];
     }
-    plan.score = std::min(plan.score, chosen->second);
-    plan.paths.push_back(chosen->first);
+    return *chosen;
   }
-  for (int j = 0; j < people.standing; ++j) {
+
+  void addStanding(PeoplePlan& plan) {
     std::optional<FloorPath> best;
     double best_score = -1;
     for (int attempt = 0; attempt < 60; ++attempt) {
-      FloorPath spot({pick() - centre}, 0.0);
+      FloorPath spot({pick() - centre_}, 0.0);
       // Farther than 2 m from everybody is as good as any distance.
-      const double room = std::min(2.0, pathDistance(spot, plan.paths, camera.t));
-      const double score = candidateScore(cameraDistance(spot, camera, centre), o.camera_clearance,
-                                          room, o.separation, room);
+      const double room = std::min(2.0, pathDistance(spot, plan.paths, camera_.t));
+      const double score = candidateScore(cameraDistance(spot, camera_, centre_),
+                                          o_.camera_clearance, room, o_.separation, room);
       if (score > best_score) best = spot, best_score = score;
     }
     plan.score = std::min(plan.score, best_score);
     plan.paths.push_back(*best);
   }
-  return plan;
+
+  const PeopleOptions& people_;
+  const FloorMap& map_;
+  const std::vector<Eigen::Vector2d>& cells_;
+  const Eigen::Vector2d& centre_;
+  const CameraTrack& camera_;
+  const FloorPlanOptions& o_;
+  std::mt19937_64& rng_;
+};
+
+PeoplePlan planPeopleOnce(const PeopleOptions& people, const FloorMap& map,
+                          const std::vector<Eigen::Vector2d>& cells, const Eigen::Vector2d& centre,
+                          const CameraTrack& camera, const FloorPlanOptions& o, int restart,
+                          std::mt19937_64& rng) {
+  return PeoplePlanner(people, map, cells, centre, camera, o, rng).plan(restart);
 }
 
 }  // namespace

@@ -153,19 +153,9 @@ void addRasterTriangle(FixedPoint a, FixedPoint b, FixedPoint c, const ShadingPl
   scene.triangles.push_back(t);
 }
 
-}  // namespace
-
-void setupTriangles(const Mesh& mesh, const TextureLibrary& textures,
-                    const core::CameraIntrinsics& camera, const Eigen::Isometry3d& T_world_camera,
-                    double near_plane, RasterScene& scene) {
-  scene.shading.clear();
-  scene.triangles.clear();
-  const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
-  const Eigen::Matrix3d R = T_camera_world.linear();
-  const Eigen::Vector3d t = T_camera_world.translation();
-  const std::array<ClipPlane, kClipPlanes> planes = clipPlanes(camera, near_plane);
-
-  // Sampler view of every texture (sized first: ShadingPlanes point into it).
+/// Sampler view of every texture's mip levels in scene.sampler_levels (sized first:
+/// ShadingPlanes point into it); returns each texture's first level there.
+std::vector<size_t> setupSamplers(const TextureLibrary& textures, RasterScene& scene) {
   std::vector<size_t> first_level(textures.size());
   size_t level_total = 0;
   for (size_t i = 0; i < textures.size(); ++i) {
@@ -184,6 +174,38 @@ void setupTriangles(const Mesh& mesh, const TextureLibrary& textures,
       while ((1 << sampler.width_bits) < levels[l].width) ++sampler.width_bits;
     }
   }
+  return first_level;
+}
+
+/// The camera-frame triangle P clipped to the view volume into `polygon`; false when nothing
+/// of it is left.
+bool clipToView(const std::array<Eigen::Vector3d, 3>& P,
+                const std::array<ClipPlane, kClipPlanes>& planes, bool inside_all,
+                Polygon& polygon) {
+  Polygon scratch;
+  for (int i = 0; i < 3; ++i) polygon.vertex[i] = P[i];
+  polygon.size = 3;
+  if (inside_all) return true;
+  for (const ClipPlane& plane : planes) {
+    clip(plane, polygon, scratch);
+    std::swap(polygon, scratch);
+    if (polygon.size < 3) break;
+  }
+  return polygon.size >= 3;
+}
+
+}  // namespace
+
+void setupTriangles(const Mesh& mesh, const TextureLibrary& textures,
+                    const core::CameraIntrinsics& camera, const Eigen::Isometry3d& T_world_camera,
+                    double near_plane, RasterScene& scene) {
+  scene.shading.clear();
+  scene.triangles.clear();
+  const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
+  const Eigen::Matrix3d R = T_camera_world.linear();
+  const Eigen::Vector3d t = T_camera_world.translation();
+  const std::array<ClipPlane, kClipPlanes> planes = clipPlanes(camera, near_plane);
+  const std::vector<size_t> first_level = setupSamplers(textures, scene);
 
   for (const Triangle& triangle : mesh) {
     if (triangle.texture < 0 || static_cast<size_t>(triangle.texture) >= textures.size())
@@ -203,18 +225,8 @@ void setupTriangles(const Mesh& mesh, const TextureLibrary& textures,
     if (!shadingPlane(P, triangle, textures.mipLevels(triangle.texture),
                       &scene.sampler_levels[first_level[triangle.texture]], camera, shading))
       continue;
-
-    Polygon polygon, scratch;
-    for (int i = 0; i < 3; ++i) polygon.vertex[i] = P[i];
-    polygon.size = 3;
-    if (!inside_all) {
-      for (const ClipPlane& plane : planes) {
-        clip(plane, polygon, scratch);
-        std::swap(polygon, scratch);
-        if (polygon.size < 3) break;
-      }
-      if (polygon.size < 3) continue;
-    }
+    Polygon polygon;
+    if (!clipToView(P, planes, inside_all, polygon)) continue;
     const auto index = static_cast<int32_t>(scene.shading.size());
     const size_t first_raster = scene.triangles.size();
     const FixedPoint fan_root = project(polygon.vertex[0], camera);

@@ -41,17 +41,23 @@ void addStreetFurniture(Mesh& mesh, double side, double kerb_y, double length, i
   }
 }
 
-}  // namespace
+/// The street's layout across it: road half-width, the facades' distance from the axis and the
+/// robot's two lanes on the right sidewalk (out at y_out, back 0.8 m nearer the road).
+struct StreetLayout {
+  double L, R, S, facade, yOut, yBack;
+  explicit StreetLayout(const WorldOptions& w)
+      : L(w.street_length),
+        R(w.road_width),
+        S(w.sidewalk_width),
+        facade(R / 2 + S),
+        yOut(-(R / 2 + S / 2) - 0.4),
+        yBack(yOut + 0.8) {}
+};
 
-Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::mt19937_64& rng) {
-  const auto& w = o.world;
-  const double L = w.street_length, R = w.road_width, S = w.sidewalk_width;
-  if (L < 20 || R < 9 || S < 3)
-    throw std::invalid_argument(
-        "street: street_length >= 20, road_width >= 9 and sidewalk_width >= 3 m are needed "
-        "for the lanes, parking strips and the robot's lanes on the sidewalk");
-  Scene scene;
-  Mesh& m = scene.static_mesh;
+/// Road, sidewalks, kerbs, building rows, street furniture and the buildings closing both ends.
+void addStreetStatics(Mesh& m, const StreetLayout& s, TextureLibrary& textures,
+                      std::mt19937_64& rng) {
+  const double L = s.L, R = s.R, S = s.S, facade = s.facade;
   const int asphalt = textures.add(makeTexture(TextureKind::Asphalt, rng()));
   const int paving = textures.add(makeTexture(TextureKind::Tiles, rng()));
   const int kerb = textures.add(makeTexture(TextureKind::Checker, rng(), 64));
@@ -62,7 +68,7 @@ Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::
   const int metal = textures.add(makeTexture(TextureKind::Asphalt, rng(), 64));
   const int bins = textures.add(makeTexture(TextureKind::Wood, rng(), 64));
 
-  const double x0 = -kBeyondEnds, x1 = L + kBeyondEnds, facade = R / 2 + S;
+  const double x0 = -kBeyondEnds, x1 = L + kBeyondEnds;
   addQuad(m, {x0, -R / 2, 0}, {x1 - x0, 0, 0}, {0, R, 0}, asphalt, 0, 3.5);
   for (const double side : {-1.0, 1.0}) {
     addQuad(m, {x0, side * R / 2, 0}, {x1 - x0, 0, 0}, {0, side * S, 0}, paving, 0, 1.0);
@@ -73,18 +79,14 @@ Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::
   }
   for (const double x : {x0, x1})  // the street ends in a building across it
     addBox(m, placedAt(x + (x < 0 ? -4 : 4), 0, 7.5), {4, facade + 8, 7.5}, facades[0], 0, 2.5);
+}
 
-  // The robot's lanes on the right sidewalk: out at y_out, back 0.8 m nearer the road.
-  const double yOut = -(R / 2 + S / 2) - 0.4, yBack = yOut + 0.8;
-  scene.route = {{5, yOut}, {L - 5, yOut}, {L - 5, yBack}, {5, yBack}};
-  scene.orbit_centre = {L / 2, 0};
-  scene.background = {235, 206, 170};  // a pale blue sky
-
-  // People: sidewalk lanes 0.9 m either side of the robot's lanes; in high interaction half of
-  // the walkers pace across the robot's sidewalk (between the shops and the kerb) instead.
-  const auto& p = o.people;
-  uint16_t id = 1;
-  const std::vector<double> lanes = {yOut - 0.9, yBack + 0.9, R / 2 + 0.7, facade - 0.7};
+/// People: sidewalk lanes 0.9 m either side of the robot's lanes; in high interaction half of
+/// the walkers pace across the robot's sidewalk (between the shops and the kerb) instead.
+void addStreetPeople(Scene& scene, const PeopleOptions& p, const StreetLayout& s, uint16_t& id,
+                     TextureLibrary& textures, std::mt19937_64& rng) {
+  const double L = s.L, R = s.R, facade = s.facade;
+  const std::vector<double> lanes = {s.yOut - 0.9, s.yBack + 0.9, R / 2 + 0.7, facade - 0.7};
   for (int i = 0; i < p.walkers; ++i) {
     const double x = uniformReal(rng, 5, L - 5);
     std::vector<Eigen::Vector2d> waypoints;
@@ -105,10 +107,14 @@ Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::
     scene.agents.push_back(makePerson(id++, FloorPath({{uniformReal(rng, 5, L - 5), y}}, 0.0),
                                       p.stride, textures, rng));
   }
+}
 
-  // Cars: round the block (right-hand traffic: +x on the right lane), evenly spread. The lane
-  // centres leave a car's width plus a gap to the parked cars.
-  const auto& c = o.cars;
+/// Cars: round the block (right-hand traffic: +x on the right lane), evenly spread, the lane
+/// centres a car's width plus a gap from the parked cars; parked cars in the parking strips, at
+/// least 6 m apart (bumper to bumper about 1.5 m).
+void addStreetCars(Scene& scene, const CarOptions& c, const StreetLayout& s, uint16_t& id,
+                   TextureLibrary& textures, std::mt19937_64& rng) {
+  const double L = s.L, R = s.R;
   const double lane = R / 2 - 3.3;
   const std::vector<Eigen::Vector2d> block = {
       {-40, -lane}, {L + 40, -lane}, {L + 40, lane}, {-40, lane}};
@@ -118,7 +124,6 @@ Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::
     scene.agents.push_back(makeCar(
         id++, FloorPath(block, c.speed, offset, FloorPath::Mode::Loop, 3.0), textures, rng));
   }
-  // Parked cars in the parking strips, at least 6 m apart (bumper to bumper about 1.5 m).
   std::vector<double> taken[2];
   for (int i = 0, tries = 0; i < c.parked && tries < 1000; ++tries) {
     const int side = static_cast<int>(rng() % 2);
@@ -130,6 +135,24 @@ Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::
     scene.agents.push_back(makeCar(id++, FloorPath({{x, y}}, 0.0), textures, rng));
     ++i;
   }
+}
+
+}  // namespace
+
+Scene buildStreetScene(const ScenarioOptions& o, TextureLibrary& textures, std::mt19937_64& rng) {
+  const StreetLayout s(o.world);
+  if (s.L < 20 || s.R < 9 || s.S < 3)
+    throw std::invalid_argument(
+        "street: street_length >= 20, road_width >= 9 and sidewalk_width >= 3 m are needed "
+        "for the lanes, parking strips and the robot's lanes on the sidewalk");
+  Scene scene;
+  addStreetStatics(scene.static_mesh, s, textures, rng);
+  scene.route = {{5, s.yOut}, {s.L - 5, s.yOut}, {s.L - 5, s.yBack}, {5, s.yBack}};
+  scene.orbit_centre = {s.L / 2, 0};
+  scene.background = {235, 206, 170};  // a pale blue sky
+  uint16_t id = 1;
+  addStreetPeople(scene, o.people, s, id, textures, rng);
+  addStreetCars(scene, o.cars, s, id, textures, rng);
   return scene;
 }
 

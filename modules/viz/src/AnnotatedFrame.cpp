@@ -50,30 +50,54 @@ cv::Scalar featureClassColour(core::FeatureClass feature_class) {
   return {255, 255, 255};
 }
 
-cv::Mat renderAnnotatedFrame(const core::Frame& f, const AnnotationOptions& o) {
-  cv::Mat img = baseImage(f);
-  const cv::Rect whole(0, 0, img.cols, img.rows);
+namespace {
 
+/// Each object mask tinted in its track's colour (its detection's when no track owns it).
+void drawMasks(cv::Mat& img, const core::Frame& f, double alpha) {
+  const cv::Rect whole(0, 0, img.cols, img.rows);
   // Which track owns each detection, for the mask colours.
   std::vector<int> trackOf(f.detections.size(), 0);
   for (const auto& t : f.tracks)
     if (t.detection >= 0 && t.detection < static_cast<int>(trackOf.size()))
       trackOf[static_cast<size_t>(t.detection)] = t.id;
+  for (const auto& m : f.object_masks) {
+    const cv::Rect roi = m.roi & whole;
+    if (!m.valid || m.mask.empty() || roi.empty() || roi.size() != m.mask.size()) continue;
+    const bool known = m.detection >= 0 && m.detection < static_cast<int>(trackOf.size());
+    const int id = known && trackOf[static_cast<size_t>(m.detection)] > 0
+                       ? trackOf[static_cast<size_t>(m.detection)]
+                       : 1000 + m.detection;
+    cv::Mat patch = img(roi), tinted;
+    cv::addWeighted(patch, 1.0 - alpha, cv::Mat(patch.size(), CV_8UC3, colourForId(id)), alpha, 0.0,
+                    tinted);
+    tinted.copyTo(patch, m.mask);
+  }
+}
 
-  if (o.mask_alpha > 0)
-    for (const auto& m : f.object_masks) {
-      const cv::Rect roi = m.roi & whole;
-      if (!m.valid || m.mask.empty() || roi.empty() || roi.size() != m.mask.size()) continue;
-      const bool known = m.detection >= 0 && m.detection < static_cast<int>(trackOf.size());
-      const int id = known && trackOf[static_cast<size_t>(m.detection)] > 0
-                         ? trackOf[static_cast<size_t>(m.detection)]
-                         : 1000 + m.detection;
-      cv::Mat patch = img(roi), tinted;
-      cv::addWeighted(patch, 1.0 - o.mask_alpha, cv::Mat(patch.size(), CV_8UC3, colourForId(id)),
-                      o.mask_alpha, 0.0, tinted);
-      tinted.copyTo(patch, m.mask);
-    }
+void drawTracks(cv::Mat& img, const core::Frame& f, double font_scale) {
+  for (const auto& t : f.tracks) {
+    if (t.state == core::TrackState::Lost) continue;
+    const cv::Scalar colour = colourForId(t.id);
+    const bool coasting = t.detection < 0;
+    cv::rectangle(img, t.box, colour, coasting ? 1 : 2, cv::LINE_AA);
+    // A coasting track says its id only: far crowds coast by the dozen (outdoor_street_high
+    // frame 190: 57 tracks) and their full labels covered the picture.
+    std::string text = "#" + std::to_string(t.id);
+    if (coasting)
+      text += " ~";
+    else
+      text += " " + t.category + (t.depth > 0 ? fixed(" d=%.2fm", t.depth) : " no depth");
+    if (t.state == core::TrackState::Tentative) text += " ?";
+    label(img, text, {static_cast<int>(t.box.x), static_cast<int>(t.box.y) - 4}, colour,
+          font_scale);
+  }
+}
 
+}  // namespace
+
+cv::Mat renderAnnotatedFrame(const core::Frame& f, const AnnotationOptions& o) {
+  cv::Mat img = baseImage(f);
+  if (o.mask_alpha > 0) drawMasks(img, f, o.mask_alpha);
   if (o.detections)
     for (const auto& d : f.detections) {
       cv::rectangle(img, d.box, {200, 200, 200}, 1, cv::LINE_AA);
@@ -81,25 +105,7 @@ cv::Mat renderAnnotatedFrame(const core::Frame& f, const AnnotationOptions& o) {
             {static_cast<int>(d.box.x), static_cast<int>(d.box.y + d.box.height) + 12},
             {200, 200, 200}, o.font_scale * 0.85);
     }
-
-  if (o.tracks)
-    for (const auto& t : f.tracks) {
-      if (t.state == core::TrackState::Lost) continue;
-      const cv::Scalar colour = colourForId(t.id);
-      const bool coasting = t.detection < 0;
-      cv::rectangle(img, t.box, colour, coasting ? 1 : 2, cv::LINE_AA);
-      // A coasting track says its id only: far crowds coast by the dozen (outdoor_street_high
-      // frame 190: 57 tracks) and their full labels covered the picture.
-      std::string text = "#" + std::to_string(t.id);
-      if (coasting)
-        text += " ~";
-      else
-        text += " " + t.category + (t.depth > 0 ? fixed(" d=%.2fm", t.depth) : " no depth");
-      if (t.state == core::TrackState::Tentative) text += " ?";
-      label(img, text, {static_cast<int>(t.box.x), static_cast<int>(t.box.y) - 4}, colour,
-            o.font_scale);
-    }
-
+  if (o.tracks) drawTracks(img, f, o.font_scale);
   if (o.features)
     for (const auto& feature : f.features)
       cv::circle(img, feature.pixel, 2, featureClassColour(feature.feature_class), cv::FILLED,

@@ -127,10 +127,13 @@ std::vector<uint8_t> compressedBytes(int frame) {
   return bytes;
 }
 
-void writeTestBag(const std::string& path) {
-  rosbag::Bag bag(path, rosbag::bagmode::Write);
-  auto recorded = [](double t, double latency) { return ros::Time(t + latency); };
+namespace {
 
+/// When the recorder received a message stamped t: `latency` s later.
+ros::Time recorded(double t, double latency) { return ros::Time(t + latency); }
+
+/// The colour camera's CameraInfo, and the same for the depth camera (no distortion).
+void writeCameraInfos(rosbag::Bag& bag) {
   sensor_msgs::CameraInfo info;
   info.header = header(colourStamp(0), "camera_color_optical_frame");
   info.width = kWidth;
@@ -142,7 +145,10 @@ void writeTestBag(const std::string& path) {
   info.header.frame_id = "camera_depth_optical_frame";
   info.D = {0, 0, 0, 0, 0};
   bag.write("/cam/depth/camera_info", recorded(colourStamp(0), 0.04), info);
+}
 
+/// One IMU stream with both, and RealSense's split gyro and accelerometer streams.
+void writeImu(rosbag::Bag& bag) {
   for (const double t : imuStamps()) {
     const auto g = gyroAt(t), a = accAt(t);
     bag.write("/imu", recorded(t, 0.001), imuMessage(t, &g, &a));
@@ -152,6 +158,10 @@ void writeTestBag(const std::string& path) {
     const auto a = accAt(t);
     bag.write("/accel/sample", recorded(t, 0.001), imuMessage(t, nullptr, &a));
   }
+}
+
+/// NavSatFix messages (one without a fix) and raw NMEA sentences (one unknown to MRPT).
+void writeGnss(rosbag::Bag& bag) {
   for (const Fix& f : fixes()) {
     sensor_msgs::NavSatFix msg;
     msg.header = header(f.t, "gps");
@@ -168,35 +178,47 @@ void writeTestBag(const std::string& path) {
     msg.sentence = line.sentence;
     bag.write("/gps/nmea", recorded(line.t, 0.01), msg);
   }
-  for (int i = 0; i < kFrames; ++i) {
-    const double t = colourStamp(i), td = t + 0.003;
-    cv::Mat rgb;
-    cv::cvtColor(expectedBgr(i), rgb, cv::COLOR_BGR2RGB);
-    bag.write("/cam/color/image_raw", recorded(t, 0.04), imageMessage(rgb, "rgb8", t));
-    sensor_msgs::CompressedImage compressed;
-    compressed.header = header(t, "camera_color_optical_frame");
-    compressed.format = i % 2 ? "rgb8; jpeg compressed bgr8" : "rgb8; png compressed bgr8";
-    compressed.data = compressedBytes(i);
-    bag.write("/cam/color/image_raw/compressed", recorded(t, 0.04), compressed);
-    const cv::Mat mm = expectedDepthMm(i);
-    bag.write("/cam/aligned_depth/image_raw", recorded(td, 0.045), imageMessage(mm, "16UC1", td));
-    cv::Mat metres;
-    mm.convertTo(metres, CV_32FC1, 0.001);
-    bag.write("/cam/depth_metres", recorded(td, 0.045), imageMessage(metres, "32FC1", td));
-    // image_transport's compressedDepth: a 12-byte ConfigHeader (format, 2 floats), then PNG.
-    sensor_msgs::CompressedImage packed;
-    packed.header = header(td, "camera_depth_optical_frame");
-    packed.format = "16UC1; compressedDepth png";
-    packed.data.assign(12, 0);
-    std::vector<uint8_t> png;
-    cv::imencode(".png", mm, png);
-    packed.data.insert(packed.data.end(), png.begin(), png.end());
-    bag.write("/cam/depth_compressed", recorded(td, 0.045), packed);
-    const cv::Mat plane(kHeight, kWidth, CV_16UC1, cv::Scalar(1000));
-    bag.write("/cam/depth_shifted", recorded(td, 0.045), imageMessage(plane, "16UC1", td));
-    cv::Mat eight(kHeight, kWidth, CV_8UC1, cv::Scalar(5));
-    bag.write("/cam/depth_8bit", recorded(td, 0.045), imageMessage(eight, "mono8", td));
-  }
+}
+
+/// Frame i's colour (raw and compressed) and its depth in every encoding the tests try.
+void writeFrame(rosbag::Bag& bag, int i) {
+  const double t = colourStamp(i), td = t + 0.003;
+  cv::Mat rgb;
+  cv::cvtColor(expectedBgr(i), rgb, cv::COLOR_BGR2RGB);
+  bag.write("/cam/color/image_raw", recorded(t, 0.04), imageMessage(rgb, "rgb8", t));
+  sensor_msgs::CompressedImage compressed;
+  compressed.header = header(t, "camera_color_optical_frame");
+  compressed.format = i % 2 ? "rgb8; jpeg compressed bgr8" : "rgb8; png compressed bgr8";
+  compressed.data = compressedBytes(i);
+  bag.write("/cam/color/image_raw/compressed", recorded(t, 0.04), compressed);
+  const cv::Mat mm = expectedDepthMm(i);
+  bag.write("/cam/aligned_depth/image_raw", recorded(td, 0.045), imageMessage(mm, "16UC1", td));
+  cv::Mat metres;
+  mm.convertTo(metres, CV_32FC1, 0.001);
+  bag.write("/cam/depth_metres", recorded(td, 0.045), imageMessage(metres, "32FC1", td));
+  // image_transport's compressedDepth: a 12-byte ConfigHeader (format, 2 floats), then PNG.
+  sensor_msgs::CompressedImage packed;
+  packed.header = header(td, "camera_depth_optical_frame");
+  packed.format = "16UC1; compressedDepth png";
+  packed.data.assign(12, 0);
+  std::vector<uint8_t> png;
+  cv::imencode(".png", mm, png);
+  packed.data.insert(packed.data.end(), png.begin(), png.end());
+  bag.write("/cam/depth_compressed", recorded(td, 0.045), packed);
+  const cv::Mat plane(kHeight, kWidth, CV_16UC1, cv::Scalar(1000));
+  bag.write("/cam/depth_shifted", recorded(td, 0.045), imageMessage(plane, "16UC1", td));
+  cv::Mat eight(kHeight, kWidth, CV_8UC1, cv::Scalar(5));
+  bag.write("/cam/depth_8bit", recorded(td, 0.045), imageMessage(eight, "mono8", td));
+}
+
+}  // namespace
+
+void writeTestBag(const std::string& path) {
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  writeCameraInfos(bag);
+  writeImu(bag);
+  writeGnss(bag);
+  for (int i = 0; i < kFrames; ++i) writeFrame(bag, i);
   bag.close();
 }
 

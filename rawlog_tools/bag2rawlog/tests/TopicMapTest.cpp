@@ -53,3 +53,34 @@ TEST(Bag2RawlogTopicMap, PosesParseInTumOrderAndBadOnesAreNamed) {
   }
   EXPECT_THROW(parsePose("0 0 0 0 0 0 2", "imu_pose"), ConversionError);  // not unit
 }
+
+TEST(Bag2RawlogTopicMap, ValuesOutOfRangeAndUnmetNeedsAreRefusedNamingTheKeys) {
+  const auto loadError = [](const std::string& ini) {
+    TopicMap topics;
+    try {
+      dynslam::core::loadOptionsStrict(topics, dynslam::core::IniConfig::fromText(ini, "map.ini"),
+                                       kSection);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string unmet = loadError("[bag2rawlog]\ndepth_to_colour_pose = 0 0 0 0 0 0 1\n");
+  EXPECT_NE(unmet.find("depth_to_colour_pose is set, but it acts only with "
+                       "depth_camera_info_topic"),
+            std::string::npos)
+      << unmet;
+  const std::string range = loadError("[bag2rawlog]\nrgbd_max_dt = 0\n");
+  EXPECT_NE(range.find("[bag2rawlog] in map.ini: rgbd_max_dt = 0: must be > 0"),
+            std::string::npos)
+      << range;
+  TopicMap inCode;
+  inCode.imu_topic = "/imu";
+  inCode.reorder_window = -1;
+  try {
+    inCode.validate("code");
+    FAIL() << "reorder_window = -1 accepted";
+  } catch (const ConversionError& e) {
+    EXPECT_NE(std::string(e.what()).find("reorder_window = -1"), std::string::npos) << e.what();
+  }
+}

@@ -27,7 +27,9 @@
 
 namespace dynslam::sim {
 
+class FloorMap;
 class RealRgbdStream;
+struct CameraTrack;
 
 /// What the Augmenter found in the real sequence (for logs and tests).
 struct AugmentSummary {
@@ -78,11 +80,24 @@ class Augmenter : public Sequence {
     double stamp;             ///< s (Unix time)
     Eigen::Isometry3d T_world_camera;
   };
+  /// The ground truth and the rawlog's RGB-D stamps: frames_ (those with a pose).
+  void readRealFrames();
   /// Floor plane, floor frame F (origin at the most-seen clear floor), free-floor map, then the
   /// people's and cars' paths on it (in F).
   void findFloorAndPlaceAgents(const std::vector<PointGrid>& grids,
                                const std::vector<cv::Mat>& depths,
                                const std::vector<std::size_t>& sampled, std::mt19937_64& rng);
+  /// The free-floor map in the first floor frame (map), and the cameras' track on it.
+  FloorMap buildFloorMap(const std::vector<PointGrid>& grids, const std::vector<cv::Mat>& depths,
+                         const std::vector<std::size_t>& sampled,
+                         const Eigen::Isometry3d& T_map_world, CameraTrack& track) const;
+  /// summary_'s clear cells and the extent of the clear floor.
+  void summariseClearFloor(const FloorMap& map);
+  /// The people's and cars' paths on the clear floor around `region`, and how close they come.
+  void placeAgents(const FloorMap& map, const Eigen::Vector2d& region, const CameraTrack& track,
+                   std::mt19937_64& rng);
+  /// The IMU (and GNSS) from a spline through the real camera poses, in F.
+  void synthesizeInertialSensors();
 
   ScenarioOptions options_;
   std::string rawlog_path_;

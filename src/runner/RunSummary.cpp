@@ -1,0 +1,112 @@
+#include "RunSummary.h"
+
+#include <dynslam/core/JsonWriter.h>
+#include <dynslam/core/Pipeline.h>
+#include <dynslam/io/FrameReader.h>
+
+#include <algorithm>
+#include <fstream>
+
+namespace dynslam::runner {
+
+void RunRecord::failIfOk(const std::string& what) {
+  if (status != "ok") return;
+  status = "failed";
+  error = what;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  const size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + mid, v.end());
+  if (v.size() % 2) return v[mid];
+  return 0.5 * (v[mid] + *std::max_element(v.begin(), v.begin() + mid));
+}
+
+namespace {
+
+void writeApe(core::JsonWriter& j, const RunnerArgs& args, const ApeScore& a) {
+  j.key("ape").beginObject();
+  j.member("ground_truth", args.ground_truth).member("alignment", "se3");
+  j.member("pose_relation", "translation_part").member("unit", "m");
+  j.member("pairs", a.pairs).member("max_pairs", a.max_pairs);
+  const evaluation::ErrorStatistics& st = a.statistics;
+  j.member("rmse", st.rmse).member("mean", st.mean).member("median", st.median);
+  j.member("std", st.std).member("min", st.min).member("max", st.max).member("sse", st.sse);
+  j.endObject();
+}
+
+void writeRealtime(core::JsonWriter& j, const RunRecord& rec) {
+  // A frame is late when it reached the pipeline more than one camera interval after its
+  // stamp's due time: the stages (not counting the detector thread) fell behind the camera.
+  const double interval = median(rec.dt_ms);
+  const auto late =
+      std::count_if(rec.lag_ms.begin(), rec.lag_ms.end(), [&](double l) { return l > interval; });
+  j.key("realtime").beginObject();
+  j.member("camera_interval_ms", interval).member("lag_median_ms", median(rec.lag_ms));
+  j.member("lag_max_ms",
+           rec.lag_ms.empty() ? 0.0 : *std::max_element(rec.lag_ms.begin(), rec.lag_ms.end()));
+  j.member("frames_late", static_cast<size_t>(late));
+  j.endObject();
+}
+
+void writeObservations(core::JsonWriter& j, const io::FrameReader& reader) {
+  const io::SyncCounts c = reader.counts();
+  j.key("observations").beginObject();
+  j.member("total", c.observations).member("rgbd", c.rgbd).member("imu", c.imu);
+  j.member("gnss", c.gnss).member("gnss_dropped", c.gnss_dropped).member("other", c.other);
+  j.member("frames_without_depth", c.frames_without_depth);
+  j.key("by_type").beginObject();
+  for (const auto& [type, n] : c.by_type) j.member(type, n);
+  j.endObject().endObject();
+}
+
+void writeStages(core::JsonWriter& j, const core::Pipeline* pipeline) {
+  j.key("stages").beginArray();
+  if (pipeline) {
+    const auto stats = pipeline->statistics();
+    for (size_t i = 0; i < pipeline->times().size(); ++i) {
+      const auto& t = pipeline->times()[i];
+      j.beginObject().member("name", t.name).member("median_ms", median(t.ms));
+      j.member("frames", t.ms.size());
+      if (!stats[i].empty()) {
+        j.key("statistics").beginObject();
+        for (const auto& [name, value] : stats[i]) j.member(name, value);
+        j.endObject();
+      }
+      j.endObject();
+    }
+  }
+  j.endArray();
+}
+
+}  // namespace
+
+void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
+                  const io::FrameReader* reader, const core::Pipeline* pipeline) {
+  std::ofstream out(path);
+  core::JsonWriter j(out);
+  j.beginObject();
+  j.member("status", rec.status);
+  if (!rec.error.empty()) j.member("error", rec.error);
+  j.member("config", args.config).member("rawlog", args.rawlog);
+  j.key("overrides").beginArray();
+  for (const auto& o : args.overrides) j.value(o);
+  j.endArray();
+  j.member("frames", rec.frames).member("poses", rec.poses).member("objects", rec.objects);
+  j.member("estimator", rec.estimator);
+  j.member("imu_samples", rec.imu_samples).member("gnss_fixes", rec.gnss_fixes);
+  j.member("wall_time_s", rec.wall_s);
+  j.member("fps", rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
+  if (rec.ape)
+    writeApe(j, args, *rec.ape);
+  else if (!rec.ape_error.empty())
+    j.member("ape_error", rec.ape_error);
+  if (args.map) j.member("map_points", rec.map_points);
+  if (args.realtime) writeRealtime(j, rec);
+  if (reader) writeObservations(j, *reader);
+  writeStages(j, pipeline);
+  j.endObject();
+}
+
+}  // namespace dynslam::runner
