@@ -19,6 +19,21 @@ namespace {
 
 using namespace testing;
 
+/// The walker's mask (m[0]) grown over the left half of the standing person's box (m[1]): the
+/// walker's pixels and those of that half, not the wall between them, as a mask holds every pixel
+/// of its box within its depth range.
+cv::Rect growWalkerMaskOverStandingHalf(std::vector<core::ObjectMask>& m) {
+  cv::Rect half = m[1].roi;
+  half.width /= 2;
+  const cv::Rect roi = m[0].roi | half;
+  cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
+  mask(m[0].roi - roi.tl()).setTo(255);
+  mask(half - roi.tl()).setTo(255);
+  m[0].roi = roi;
+  m[0].mask = mask;
+  return half;
+}
+
 // The walker's mask grows over the left half of the standing person (a mask holds every pixel of
 // its box within its depth range; here the standing person's own detection is missed too): by
 // the object's class the standing person's features there turn dynamic; with
@@ -29,17 +44,7 @@ TEST(DynamicClassifier, StillStaticFeaturesStayStaticUnderAMovingObjectsMask) {
     DynamicClassifierParams params = methodClassification();
     params.still_feature_speed = stillSpeed;
     const core::Frame f = classifyWithEditedMasks(params, [](std::vector<core::ObjectMask>& m) {
-      // The walker's pixels and those of the standing person's left half, not the wall
-      // between them.
-      const cv::Rect walker = m[0].roi;
-      cv::Rect half = m[1].roi;
-      half.width /= 2;
-      const cv::Rect roi = walker | half;
-      cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
-      mask(walker - roi.tl()).setTo(255);
-      mask(half - roi.tl()).setTo(255);
-      m[0].roi = roi;
-      m[0].mask = mask;
+      growWalkerMaskOverStandingHalf(m);
       m.erase(m.begin() + 1);
     });
     int onWalker = 0, staticOnWalker = 0, walkerDynamic = 0;
@@ -78,15 +83,7 @@ TEST(DynamicClassifier, StillFeaturesInAStillObjectsBoxAreStaticThoughNeverStati
     for (int k = 0; k < 15; ++k) {
       f = scene.frame(k);
       if (k >= 12) {
-        auto& m = f.object_masks;
-        cv::Rect half = m[1].roi;
-        half.width /= 2;
-        const cv::Rect roi = m[0].roi | half;
-        cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
-        mask(m[0].roi - roi.tl()).setTo(255);
-        mask(half - roi.tl()).setTo(255);
-        m[0].roi = roi;
-        m[0].mask = mask;
+        growWalkerMaskOverStandingHalf(f.object_masks);
         for (auto& feat : f.features)
           if (feat.id >= 2000 && feat.id < 3000) feat.id += 3000;
       }
@@ -135,14 +132,7 @@ TEST(DynamicClassifier, NewFeaturesInAStillObjectsBoxGoByDepth) {
       f = scene.frame(k);
       if (k == 12) {
         auto& m = f.object_masks;
-        cv::Rect half = m[1].roi;
-        half.width /= 2;
-        const cv::Rect roi = m[0].roi | half;
-        cv::Mat mask(roi.size(), CV_8UC1, cv::Scalar(0));
-        mask(m[0].roi - roi.tl()).setTo(255);
-        mask(half - roi.tl()).setTo(255);
-        m[0].roi = roi;
-        m[0].mask = mask;
+        const cv::Rect half = growWalkerMaskOverStandingHalf(m);
         for (auto& feat : f.features)
           if (feat.id >= 2000 && feat.id < 3000) feat.id += 3000;
         core::Feature walkerCorner;  // a new corner on the walker, in the standing one's box
