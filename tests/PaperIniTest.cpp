@@ -77,27 +77,28 @@ bool sameValue(const std::string& a, const std::string& b) {
   return a == b;
 }
 
+/// Each test renders its own two seconds: ctest runs the tests as separate processes, at once,
+/// and a folder shared between them would be removed under the other's feet.
 class PaperIni : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
+  void SetUp() override {
     sim_ = dynslam::testing::scratchDir() + "/sim";
     const auto render = runCommand(binDir() + "/dynslam-sim --config " + sourceDir() +
                                    "/params/sim/indoor_people_high.ini --out " + sim_ +
                                    " --set Scenario.duration=2 --quiet 2>&1");
     ASSERT_EQ(render.exit_code, 0) << render.output;
   }
-  static std::string dynslam(const std::string& args) {
+  std::string dynslam(const std::string& args) const {
     return binDir() + "/dynslam --config " + sourceDir() + "/params/paper.ini --set Detection.objects=" +
            sim_ + "/objects.txt " + args + " 2>&1";
   }
-  static std::string sim_;
+  std::string sim_;
 };
-std::string PaperIni::sim_;
 
 }  // namespace
 
 TEST_F(PaperIni, RunsTheWholeSystemOnTwoSimulatedSeconds) {
-  const std::string out = dynslam::testing::scratchDir() + "/paper";
+  const std::string out = sim_ + "/paper";
   const auto run = runCommand(dynslam("--rawlog " + sim_ + "/sim.rawlog --out " + out + " --gt " +
                                       sim_ + "/groundtruth.tum --quiet --no-map"));
   ASSERT_EQ(run.exit_code, 0) << run.output;

@@ -127,6 +127,7 @@ int main(int argc, char** argv) {
     options.load(cfg);
     const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
     const sim::Sequence& simulator = *sequence;
+    for (const auto& note : simulator.notes()) std::cerr << "dynslam-sim: " << note << "\n";
     rawlog_tools::SimulationWriter writer(cl.required("--out"), simulator, readFaults(cl));
     rawlog_tools::ContactSheet sheet;
     renderAll(simulator, writer, sheetRows(cl, simulator.frameCount()), sheet, cl.has("--quiet"));

@@ -215,7 +215,8 @@ void Augmenter::placeAgents(const FloorMap& map, const Eigen::Vector2d& region,
   plan.region_radius = a.region_radius;
   plan.min_walk_length = a.min_walk_length;
   plan.camera_clearance = a.camera_clearance;
-  const auto people = planPeople(options_.people, map, region, track, plan, rng);
+  const auto people =
+      planPeople(options_.people, map, region, track, plan, rng, &summary_.fallbacks);
   const auto cars = planCars(options_.cars, map, region, track, plan, rng);
   uint16_t id = 1;
   for (const auto& path : people)

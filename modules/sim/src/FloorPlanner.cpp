@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace dynslam::sim {
 namespace {
@@ -242,11 +243,15 @@ PeoplePlan planPeopleOnce(const PeopleOptions& people, const FloorMap& map,
 
 }  // namespace
 
-std::vector<FloorPath> planPeople(const PeopleOptions& people, const FloorMap& map,
-                                  const Eigen::Vector2d& centre, const CameraTrack& camera,
-                                  const FloorPlanOptions& o, std::mt19937_64& rng) {
-  const std::vector<Eigen::Vector2d> cells = regionCells(map, centre, o.region_radius);
-  PeoplePlan best, failed;
+namespace {
+
+/// The best of 20 restarts; nullopt when a walker found no chord of min_walk_length (`failed`
+/// then says which and the longest chord seen).
+std::optional<std::vector<FloorPath>> planPeopleRestarts(
+    const PeopleOptions& people, const FloorMap& map, const std::vector<Eigen::Vector2d>& cells,
+    const Eigen::Vector2d& centre, const CameraTrack& camera, const FloorPlanOptions& o,
+    std::mt19937_64& rng, PeoplePlan& failed) {
+  PeoplePlan best;
   for (int restart = 0; restart < 20; ++restart) {
     PeoplePlan plan = planPeopleOnce(people, map, cells, centre, camera, o, restart, rng);
     if (plan.walker_without_chord >= 0)
@@ -254,16 +259,54 @@ std::vector<FloorPath> planPeople(const PeopleOptions& people, const FloorMap& m
     else if (plan.score > best.score)  // keeping distances: most walking; else the least bad
       best = std::move(plan);
   }
-  if (best.score < 0) {
-    std::ostringstream msg;
-    msg << "floor planner: walker " << failed.walker_without_chord + 1
-        << " found no clear straight path of " << o.min_walk_length << " m within "
-        << o.region_radius << " m of the region centre in 20 tries (the longest clear chord "
-        << "was " << failed.longest_chord << " m; " << cells.size() << " clear cells of "
-        << map.cellSize() << " m)";
-    throw std::runtime_error(msg.str());
+  if (best.score < 0) return std::nullopt;
+  return std::move(best.paths);
+}
+
+std::string noChordMessage(const PeoplePlan& failed, const FloorPlanOptions& o,
+                           const FloorMap& map, size_t cells) {
+  std::ostringstream msg;
+  msg << "walker " << failed.walker_without_chord + 1 << " found no clear straight path of "
+      << o.min_walk_length << " m within " << o.region_radius
+      << " m of the region centre in 20 tries (the longest clear chord was "
+      << failed.longest_chord << " m; " << cells << " clear cells of " << map.cellSize() << " m)";
+  return msg.str();
+}
+
+}  // namespace
+
+std::vector<FloorPath> planPeople(const PeopleOptions& people, const FloorMap& map,
+                                  const Eigen::Vector2d& centre, const CameraTrack& camera,
+                                  const FloorPlanOptions& o, std::mt19937_64& rng,
+                                  std::vector<std::string>* fallbacks) {
+  const std::vector<Eigen::Vector2d> cells = regionCells(map, centre, o.region_radius);  // throws
+  PeopleOptions p = people;
+  FloorPlanOptions q = o;
+  std::string firstFailure;
+  for (PeoplePlan failed;;) {
+    if (auto paths = planPeopleRestarts(p, map, cells, centre, camera, q, rng, failed)) {
+      if (fallbacks && !firstFailure.empty()) {
+        std::ostringstream msg;
+        msg << "floor planner: " << firstFailure << "; placed " << p.walkers
+            << " walkers on paths of at least " << q.min_walk_length << " m and " << p.standing
+            << " standing people instead (asked for " << people.walkers << " and "
+            << people.standing << ")";
+        fallbacks->push_back(msg.str());
+      }
+      return *paths;
+    }
+    if (firstFailure.empty()) firstFailure = noChordMessage(failed, q, map, cells.size());
+    // Shorter walks first (down to shortest_walk), then one walker fewer, standing instead.
+    if (q.min_walk_length > o.shortest_walk + 1e-9) {
+      q.min_walk_length = std::max(o.shortest_walk, q.min_walk_length - 0.2);
+    } else if (p.walkers > 0) {
+      --p.walkers;
+      ++p.standing;
+      q.min_walk_length = o.min_walk_length;
+    } else {
+      throw std::runtime_error("floor planner: " + firstFailure);  // standing people always fit
+    }
   }
-  return best.paths;
 }
 
 std::vector<FloorPath> planCars(const CarOptions& cars, const FloorMap& map,

@@ -205,18 +205,51 @@ TEST(AugmentFloorPlanner, KeepsPeopleApartOnClearFloorAndFitsCarsOnlyWhereTheyFi
   }
 }
 
-TEST(AugmentFloorPlanner, SaysWhyWhenNoWalkFits) {
+// A closet (0.9 m square, the camera far away) has no clear chord of 0.8 m: the planner walks
+// the people on shorter paths or makes walkers stand, places everybody, and says what it did.
+TEST(AugmentFloorPlanner, FallsBackToShorterWalksOrStandingPeopleAndSaysSo) {
   FloorMapOptions map_options;
   map_options.cell = 0.1;
-  const FloorMap closet = syntheticMap({0, 0, 0.9, 0.9}, map_options);  // 0.9 m minus clearance
+  const FloorMap closet = syntheticMap({0, 0, 0.9, 0.9}, map_options);
   CameraTrack camera{{0.0}, {Eigen::Vector2d(5, 5)}};
-  PeopleOptions people;
+  PeopleOptions people;  // 3 walkers, 1 standing
   std::mt19937_64 rng(1);
+  std::vector<std::string> fallbacks;
+  const auto paths = planPeople(people, closet, {0.45, 0.45}, camera, {}, rng, &fallbacks);
+  EXPECT_EQ(paths.size(), 4u) << "everybody placed";
+  ASSERT_EQ(fallbacks.size(), 1u);
+  EXPECT_NE(fallbacks[0].find("no clear straight path of 0.8 m"), std::string::npos)
+      << fallbacks[0];
+  EXPECT_NE(fallbacks[0].find("asked for 3 and 1"), std::string::npos) << fallbacks[0];
+  for (const auto& path : paths)
+    for (double t = 0; t <= 10; t += 0.5) {
+      Eigen::Vector2d p;
+      double h;
+      path.at(t, p, h);
+      EXPECT_TRUE(closet.isClear(p + Eigen::Vector2d(0.45, 0.45))) << "on the clear floor, t " << t;
+    }
+
+  // A floor with room for the ini's people changes nothing and says nothing.
+  const FloorMap hall = syntheticMap({0, 0, 6, 6}, map_options);
+  fallbacks.clear();
+  EXPECT_EQ(planPeople(people, hall, {3, 3}, camera, {}, rng, &fallbacks).size(), 4u);
+  EXPECT_TRUE(fallbacks.empty());
+}
+
+// Only a region without any clear cell stops the plan.
+TEST(AugmentFloorPlanner, SaysWhyWhenTheRegionHasNoClearFloor) {
+  FloorMapOptions map_options;
+  map_options.cell = 0.1;
+  const FloorMap closet = syntheticMap({0, 0, 0.9, 0.9}, map_options);
+  CameraTrack camera{{0.0}, {Eigen::Vector2d(5, 5)}};
+  std::mt19937_64 rng(1);
+  FloorPlanOptions far;
+  far.region_radius = 0.5;
   try {
-    planPeople(people, closet, {0.45, 0.45}, camera, {}, rng);
+    planPeople(PeopleOptions{}, closet, {20, 20}, camera, far, rng);
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("no clear straight path of 0.8 m"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("no clear floor within 0.5"), std::string::npos)
         << e.what();
   }
 }

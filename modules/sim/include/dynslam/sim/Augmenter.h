@@ -42,6 +42,8 @@ struct AugmentSummary {
   /// Over all frames, m on the floor: the closest two agents came to each other (infinity for
   /// fewer than two) and the closest any agent came to the camera's optical centre.
   double min_agent_separation = 0, min_camera_distance = 0;
+  /// What the floor planner placed instead of the ini's people when they did not fit.
+  std::vector<std::string> fallbacks;
 };
 
 class Augmenter : public Sequence {
@@ -68,6 +70,7 @@ class Augmenter : public Sequence {
   const std::vector<Agent>& agents() const { return agents_; }
   const TextureLibrary& textures() const { return textures_; }
   const AugmentSummary& summary() const { return summary_; }
+  std::vector<std::string> notes() const override { return summary_.fallbacks; }
   /// Body (IMU) trajectory in F, t in s since the first frame.
   const SplineTrajectory& trajectory() const { return *trajectory_; }
   const Eigen::Isometry3d& T_body_camera() const override { return T_body_camera_; }

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <random>
+#include <string>
 #include <vector>
 
 namespace dynslam::sim {
@@ -25,6 +26,9 @@ struct CameraTrack {
 struct FloorPlanOptions {
   double region_radius = 2.0;     ///< m around the centre that paths may use
   double min_walk_length = 0.8;   ///< m; shorter clear chords are not used for walkers
+  /// m; when no plan gives every walker min_walk_length, walks are shortened in 0.2 m steps
+  /// down to this before a walker becomes a standing person.
+  double shortest_walk = 0.4;
   double camera_clearance = 0.5;  ///< m kept between any agent and the camera at every frame
   double separation = 0.6;        ///< m kept between people at every frame (when possible)
   double turn_length = 0.3;       ///< m over which walkers turn round (FloorPath)
@@ -40,11 +44,15 @@ Eigen::Vector2d chooseRegionCentre(const FloorMap& map, double radius);
 /// takes the longest of up to 60 candidate chords (spread angles first, then any angle through
 /// any clear cell of the region, whole or in part) that keeps camera_clearance from the camera and
 /// separation from the people placed before it at every frame; when none does, the one that comes
-/// closest. Standing people take the candidate spot farthest from everybody. Throws
-/// std::runtime_error naming the sizes when no clear chord of min_walk_length exists.
+/// closest. Standing people take the candidate spot farthest from everybody. A floor with too
+/// little room does not stop the plan: when no clear chord of min_walk_length exists, walks are
+/// shortened (down to shortest_walk), then walkers become standing people one at a time, and
+/// `fallbacks` (when given) receives one line saying what failed and what was placed instead.
+/// Throws std::runtime_error when the region has no clear cell at all.
 std::vector<FloorPath> planPeople(const PeopleOptions& people, const FloorMap& map,
                                   const Eigen::Vector2d& centre, const CameraTrack& camera,
-                                  const FloorPlanOptions& options, std::mt19937_64& rng);
+                                  const FloorPlanOptions& options, std::mt19937_64& rng,
+                                  std::vector<std::string>* fallbacks = nullptr);
 
 /// Driving cars loop round a lane pair (out on one lane, back on the other, 1.2 widths apart,
 /// at least two car lengths long); parked cars stand with heading 0 (FloorPath's heading of a

@@ -72,6 +72,9 @@ class Sequence {
   /// The IMU's axes in the body frame. The simulated body is the IMU itself (the samples are
   /// synthesized with this extrinsic), so identity unless a source says otherwise.
   virtual Eigen::Isometry3d T_body_imu() const { return Eigen::Isometry3d::Identity(); }
+  /// What the sequence changed from its ini to fit its data (augment mode on a floor with
+  /// little room: shorter walks, fewer walkers), one line each; dynslam-sim prints them.
+  virtual std::vector<std::string> notes() const { return {}; }
 };
 
 }  // namespace dynslam::sim
