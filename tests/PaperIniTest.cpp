@@ -63,8 +63,10 @@ std::map<std::string, std::string> printedConfig(const std::string& text) {
   std::string section;
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
-    if (std::regex_search(line, m, sectionLine)) section = m[1];
-    else if (std::regex_search(line, m, keyLine)) out[section + "." + std::string(m[1])] = m[2];
+    if (std::regex_search(line, m, sectionLine))
+      section = m[1];
+    else if (std::regex_search(line, m, keyLine))
+      out[section + "." + std::string(m[1])] = m[2];
   }
   return out;
 }
@@ -89,8 +91,8 @@ class PaperIni : public ::testing::Test {
     ASSERT_EQ(render.exit_code, 0) << render.output;
   }
   std::string dynslam(const std::string& args) const {
-    return binDir() + "/dynslam --config " + sourceDir() + "/params/paper.ini --set Detection.objects=" +
-           sim_ + "/objects.txt " + args + " 2>&1";
+    return binDir() + "/dynslam --config " + sourceDir() +
+           "/params/paper.ini --set Detection.objects=" + sim_ + "/objects.txt " + args + " 2>&1";
   }
   std::string sim_;
 };
@@ -124,7 +126,6 @@ TEST_F(PaperIni, EveryDepartureIsOnByDefaultAndOffInPaperIni) {
     if (d.paper.empty()) continue;
     ASSERT_TRUE(paper.count(name)) << name << " is not read by paper.ini's stages";
     EXPECT_TRUE(sameValue(paper.at(name), d.paper))
-        << name << ": design.md says paper.ini holds " << d.paper << ", it runs "
-        << paper.at(name);
+        << name << ": design.md says paper.ini holds " << d.paper << ", it runs " << paper.at(name);
   }
 }

@@ -49,8 +49,8 @@ void writeSpriteContactSheet(const dynslam::sim::SpriteBank& bank, const std::st
       cv::Mat cell = onGrey(frames[i].bgra);
       const int width = std::min(cell.cols, kCellWidth - 4);
       cell(cv::Rect(0, 0, width, cell.rows))
-          .copyTo(sheet(cv::Rect(kCaptionWidth + k * kCellWidth, r * kRowHeight + 4, width,
-                                 cell.rows)));
+          .copyTo(sheet(
+              cv::Rect(kCaptionWidth + k * kCellWidth, r * kRowHeight + 4, width, cell.rows)));
     }
   }
   if (!cv::imwrite(png, sheet))

@@ -53,7 +53,8 @@ that cannot be written, 2 usage.
 cv::VideoCapture openVideo(const std::string& path) {
   if (!fs::is_regular_file(path)) throw std::runtime_error("--video " + path + ": no such file");
   cv::VideoCapture video(path);
-  if (!video.isOpened()) throw std::runtime_error("--video " + path + ": cannot open it as a video");
+  if (!video.isOpened())
+    throw std::runtime_error("--video " + path + ": cannot open it as a video");
   return video;
 }
 
@@ -80,8 +81,8 @@ void printReport(const sim::SpriteExtractionReport& r) {
       "left out: %zu person-frames cut by the border, %zu holding two people, %zu too small, "
       "%zu far off their stretch's size; %zu stretches of two people side by side, %zu shorter "
       "than a gait cycle\n",
-      r.people, r.followed, r.sequences, r.sprite_frames, r.frames, r.cut_by_border,
-      r.two_people, r.too_small, r.size_jumps, r.pairs, r.short_stretches);
+      r.people, r.followed, r.sequences, r.sprite_frames, r.frames, r.cut_by_border, r.two_people,
+      r.too_small, r.size_jumps, r.pairs, r.short_stretches);
 }
 
 int run(const core::CommandLine& cl) {

@@ -42,8 +42,8 @@ TEST(DynslamSprites, AWalkersVideoGivesABankAndAContactSheet) {
   scene.walkers.push_back({{80, 320}, {560, 320}});
   const std::string dir = scratchDir(), out = dir + "/walker_bank";
   const std::string video = writeVideo(scene, dir, "walker.avi");
-  const auto run = runCommand(sprites("--video " + video + " --out " + out +
-                                      " --contact-sheet " + out + "/sheet.png"));
+  const auto run = runCommand(
+      sprites("--video " + video + " --out " + out + " --contact-sheet " + out + "/sheet.png"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("kept 1 people of 1 followed: 1 sequences, 48 frames"),
             std::string::npos)

@@ -263,13 +263,13 @@ std::optional<std::vector<FloorPath>> planPeopleRestarts(
   return std::move(best.paths);
 }
 
-std::string noChordMessage(const PeoplePlan& failed, const FloorPlanOptions& o,
-                           const FloorMap& map, size_t cells) {
+std::string noChordMessage(const PeoplePlan& failed, const FloorPlanOptions& o, const FloorMap& map,
+                           size_t cells) {
   std::ostringstream msg;
   msg << "walker " << failed.walker_without_chord + 1 << " found no clear straight path of "
       << o.min_walk_length << " m within " << o.region_radius
-      << " m of the region centre in 20 tries (the longest clear chord was "
-      << failed.longest_chord << " m; " << cells << " clear cells of " << map.cellSize() << " m)";
+      << " m of the region centre in 20 tries (the longest clear chord was " << failed.longest_chord
+      << " m; " << cells << " clear cells of " << map.cellSize() << " m)";
   return msg.str();
 }
 

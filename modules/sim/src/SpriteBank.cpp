@@ -39,8 +39,10 @@ IndexLine parseLine(const std::string& text, const std::string& where) {
       l.sprite.walked_heights;
   std::string rest;
   if (in.fail() || (in >> rest))
-    throw std::runtime_error(where + ": expected 'sequence frame video_frame crop_x crop_y foot_x "
-                             "foot_y height_px walked_heights', got '" + text + "'");
+    throw std::runtime_error(where +
+                             ": expected 'sequence frame video_frame crop_x crop_y foot_x "
+                             "foot_y height_px walked_heights', got '" +
+                             text + "'");
   return l;
 }
 
@@ -67,9 +69,7 @@ size_t SpriteBank::frameCount() const {
 
 cv::Point2f SpriteSequence::footVelocity() const {
   if (frames.size() < 2) return {0, 0};
-  const auto inVideo = [](const SpriteFrame& f) {
-    return cv::Point2f(f.crop_origin) + f.foot;
-  };
+  const auto inVideo = [](const SpriteFrame& f) { return cv::Point2f(f.crop_origin) + f.foot; };
   return (inVideo(frames.back()) - inVideo(frames.front())) / float(frames.size() - 1);
 }
 
@@ -119,8 +119,8 @@ SpriteBank readSpriteBank(const std::string& dir) {
     IndexLine l = parseLine(text, where);
     if (l.sequence > bank.sequences.size() ||
         (l.sequence == bank.sequences.size() && l.frame != 0) ||
-        (l.sequence < bank.sequences.size() &&
-         (l.sequence + 1 != bank.sequences.size() || l.frame != bank.sequences.back().frames.size())))
+        (l.sequence < bank.sequences.size() && (l.sequence + 1 != bank.sequences.size() ||
+                                                l.frame != bank.sequences.back().frames.size())))
       throw std::runtime_error(where + ": sequence " + std::to_string(l.sequence) + " frame " +
                                std::to_string(l.frame) + " is out of order");
     if (l.sequence == bank.sequences.size()) bank.sequences.emplace_back();

@@ -45,7 +45,8 @@ bool isShadow(const cv::Vec3b& p, const cv::Vec3b& b, const ForegroundOptions& o
 cv::Mat foregroundMask(const cv::Mat& bgr, const cv::Mat& background,
                        const ForegroundOptions& options) {
   if (bgr.size() != background.size() || bgr.type() != CV_8UC3 || background.type() != CV_8UC3)
-    throw std::invalid_argument("foregroundMask: the frame and the background differ in size or type");
+    throw std::invalid_argument(
+        "foregroundMask: the frame and the background differ in size or type");
   cv::Mat mask(bgr.size(), CV_8UC1, cv::Scalar(0));
   for (int y = 0; y < bgr.rows; ++y)
     for (int x = 0; x < bgr.cols; ++x) {
@@ -69,10 +70,9 @@ std::vector<ForegroundBlob> foregroundBlobs(const cv::Mat& mask, int min_height)
   const int n = cv::connectedComponentsWithStats(grown, labels, stats, centroids, 8, CV_32S);
   std::vector<ForegroundBlob> blobs;
   for (int label = 1; label < n; ++label) {
-    const cv::Rect grownBox(stats.at<int>(label, cv::CC_STAT_LEFT),
-                            stats.at<int>(label, cv::CC_STAT_TOP),
-                            stats.at<int>(label, cv::CC_STAT_WIDTH),
-                            stats.at<int>(label, cv::CC_STAT_HEIGHT));
+    const cv::Rect grownBox(
+        stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
+        stats.at<int>(label, cv::CC_STAT_WIDTH), stats.at<int>(label, cv::CC_STAT_HEIGHT));
     if (grownBox.height < min_height) continue;
     cv::Mat own = (labels(grownBox) == label) & mask(grownBox);
     const cv::Rect tight = cv::boundingRect(own);

@@ -57,8 +57,7 @@ TEST(SpriteExtractor, AWalkerComesOutWithItsMaskAndFootPoint) {
     scene.frame(f.video_frame, &truth);
     EXPECT_GE(maskIou(alphaInFrame(f, scene.size), truth[0]), 0.9) << "frame " << f.video_frame;
     const cv::Point2f foot = cv::Point2f(f.crop_origin) + f.foot;
-    EXPECT_LE(cv::norm(foot - footPointOfMask(truth[0])), 2.0)
-        << "frame " << f.video_frame;
+    EXPECT_LE(cv::norm(foot - footPointOfMask(truth[0])), 2.0) << "frame " << f.video_frame;
     EXPECT_NEAR(f.height_px, 150, 3);
   }
   EXPECT_NEAR(frames.back().walked_heights, 480.0 / 150, 0.15) << "480 px walked at 150 px tall";
@@ -126,7 +125,8 @@ TEST(SpriteBank, WrittenTwiceTheSameBytesAndReadBack) {
   writeSpriteBank(bank, a);
   writeSpriteBank(extract(oneWalker()), b);
   EXPECT_EQ(testing::readTextFile(a + "/bank.txt"), testing::readTextFile(b + "/bank.txt"));
-  EXPECT_EQ(testing::readTextFile(a + "/s000/f010.png"), testing::readTextFile(b + "/s000/f010.png"));
+  EXPECT_EQ(testing::readTextFile(a + "/s000/f010.png"),
+            testing::readTextFile(b + "/s000/f010.png"));
   const SpriteBank back = readSpriteBank(a);
   EXPECT_EQ(back.source, "synthetic.avi");
   ASSERT_EQ(back.frameCount(), bank.frameCount());

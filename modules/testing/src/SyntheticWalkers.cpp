@@ -15,10 +15,10 @@ cv::Mat silhouette(cv::Size size, cv::Point2f foot, int height, double walked) {
   const double h = height, swing = 0.12 * h * std::sin(2 * M_PI * walked / (0.8 * h));
   const cv::Point2f hip(foot.x, foot.y - 0.47f * float(h));
   const auto leg = [&](double dx) {
-    const std::vector<cv::Point> quad{
-        cv::Point(int(hip.x - 0.06 * h), int(hip.y)), cv::Point(int(hip.x + 0.06 * h), int(hip.y)),
-        cv::Point(int(foot.x + dx + 0.04 * h), int(foot.y)),
-        cv::Point(int(foot.x + dx - 0.04 * h), int(foot.y))};
+    const std::vector<cv::Point> quad{cv::Point(int(hip.x - 0.06 * h), int(hip.y)),
+                                      cv::Point(int(hip.x + 0.06 * h), int(hip.y)),
+                                      cv::Point(int(foot.x + dx + 0.04 * h), int(foot.y)),
+                                      cv::Point(int(foot.x + dx - 0.04 * h), int(foot.y))};
     cv::fillConvexPoly(mask, quad, cv::Scalar(255), cv::LINE_8);
   };
   leg(swing);
