@@ -86,6 +86,7 @@ AgentState agentStateAt(const Agent& agent, double t) {
 }
 
 void addAgentMesh(Mesh& mesh, const Agent& agent, double t) {
+  if (agent.sprite_sequence >= 0) return;
   if (agent.kind == AgentKind::Car)
     addCarMesh(mesh, groundPose(agent.path, t), agent.car, agent.id);
   else

@@ -222,6 +222,11 @@ void Augmenter::placeAgents(const FloorMap& map, const Eigen::Vector2d& region,
   for (const auto& path : people)
     agents_.push_back(makePerson(id++, path, options_.people.stride, textures_, rng));
   for (const auto& path : cars) agents_.push_back(makeCar(id++, path, textures_, rng));
+  if (options_.people.appearance == "video") {
+    sprites_ = std::make_unique<SpritePeople>(options_.people.sprites);
+    std::mt19937_64 spriteRng(subSeed(options_.world.seed, kSpriteStream));
+    sprites_->dress(agents_, spriteRng);
+  }
 
   summary_.min_agent_separation = summary_.min_camera_distance =
       std::numeric_limits<double>::infinity();
@@ -271,10 +276,16 @@ void Augmenter::renderFrame(size_t index, SimFrame& out) const {
                                " lacks colour or differs in size from the first frame");
     inserted = compositeOverReal(movers, real.rgb, real.depth, out.image);
   }
+  std::vector<ObjectTruth> spriteTruths;
+  if (sprites_) {
+    spriteTruths = sprites_->draw(agents_, out.t, camera_, out.T_world_camera, out.image);
+    inserted = out.image.label != 0;  // the sprites' pixels get the noise too
+  }
   std::mt19937_64 noise_rng(subSeed(options_.world.seed, kFrameStreams + index));
   applyRgbdNoiseMasked(out.image, inserted, options_.noise.rgbd, noise_rng);
   out.objects =
       agentTruths(agents_, meshes, out.t, textures_, camera_, out.T_world_camera, out.image.label);
+  appendInIdOrder(out.objects, spriteTruths);
 }
 
 }  // namespace dynslam::sim

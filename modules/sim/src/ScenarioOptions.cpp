@@ -77,6 +77,13 @@ void PeopleOptions::describe(core::OptionVisitor& v) {
         "extra people (not in augment mode): one path per |-separated group of x,y floor points "
         "(m, world frame), walked back and forth at speed; one point: a person standing there; "
         "e.g. -2,0 2,0 | 0,-1.5");
+  v.word("appearance", appearance, {"rendered", "video"},
+         "rendered: textured bodies; video: real people's pixels from a sprite bank (sprites), "
+         "each on a body-shaped surface at a height of 1.55-1.90 m");
+  v.key("sprites", sprites,
+        "the sprite bank folder for appearance = video (dynslam-sprites --out DIR; relative to "
+        "the working folder)");
+  v.requires("sprites", !sprites.empty(), "appearance = video", appearance == "video");
 }
 
 void CarOptions::describe(core::OptionVisitor& v) {
@@ -149,6 +156,10 @@ void ScenarioOptions::load(const core::IniConfig& cfg) {
   core::rejectUnknownSections(
       cfg, {"Scenario", "Camera", "People", "Cars", "Imu", "Gnss", "Noise", "Augment"});
   const auto& scene = world.scene;
+  if (people.appearance == "video" && people.sprites.empty())
+    throw core::ConfigError("[People] in " + cfg.source() +
+                            ": appearance = video needs sprites = DIR (a sprite bank made by "
+                            "dynslam-sprites --video FILE --out DIR)");
   if (scene != "street" && scene != "augment" && (cars.driving > 0 || cars.parked > 0))
     throw core::ConfigError("[Cars] in " + cfg.source() + ": cars drive and park in the street " +
                             "(and augment) scenes, not in scene = " + scene);

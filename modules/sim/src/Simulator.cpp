@@ -112,6 +112,11 @@ Simulator::Simulator(ScenarioOptions options) : options_(std::move(options)) {
   std::mt19937_64 sceneRng(subSeed(w.seed, kSceneStream));
   scene_ = buildScene(options_, textures_, sceneRng);
   addListedAgents(options_, scene_.agents, textures_, sceneRng);
+  if (options_.people.appearance == "video") {
+    sprites_ = std::make_unique<SpritePeople>(options_.people.sprites);
+    std::mt19937_64 spriteRng(subSeed(w.seed, kSpriteStream));
+    sprites_->dress(scene_.agents, spriteRng);
+  }
   trajectory_ = std::make_unique<SplineTrajectory>(cameraPath(options_, scene_));
   T_body_camera_ = cameraInBody(options_.camera);
 
@@ -144,8 +149,12 @@ void Simulator::renderFrame(size_t index, SimFrame& out) const {
   raster.threads = options_.world.render_threads;
   raster.background = {scene_.background[0], scene_.background[1], scene_.background[2]};
   render(mesh, textures_, camera_, out.T_world_camera, out.image, raster);
+  std::vector<ObjectTruth> spriteTruths;
+  if (sprites_)
+    spriteTruths = sprites_->draw(scene_.agents, out.t, camera_, out.T_world_camera, out.image);
   out.objects = agentTruths(scene_.agents, agentMeshes, out.t, textures_, camera_,
                             out.T_world_camera, out.image.label);
+  appendInIdOrder(out.objects, spriteTruths);
 
   std::mt19937_64 noiseRng(subSeed(options_.world.seed, kFrameStreams + index));
   applyRgbdNoise(out.image, options_.noise.rgbd, noiseRng);

@@ -48,6 +48,25 @@ cv::Rect imageBox(const SpriteFrame& sprite, const SpritePlane& plane,
   return box & cv::Rect(0, 0, K.width, K.height);
 }
 
+/// The sprite at (u, v), pixel centres at +0.5, interpolated between its four nearest pixels (a
+/// person nearer than in the video is enlarged without blocks).
+cv::Vec4b bilinear(const cv::Mat& bgra, double u, double v) {
+  const double x = std::clamp(u - 0.5, 0.0, bgra.cols - 1.0);
+  const double y = std::clamp(v - 0.5, 0.0, bgra.rows - 1.0);
+  const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, bgra.cols - 1),
+            y1 = std::min(y0 + 1, bgra.rows - 1);
+  const double fx = x - x0, fy = y - y0;
+  cv::Vec4b out;
+  for (int c = 0; c < 4; ++c) {
+    const double top =
+        (1 - fx) * bgra.at<cv::Vec4b>(y0, x0)[c] + fx * bgra.at<cv::Vec4b>(y0, x1)[c];
+    const double bottom =
+        (1 - fx) * bgra.at<cv::Vec4b>(y1, x0)[c] + fx * bgra.at<cv::Vec4b>(y1, x1)[c];
+    out[c] = cv::saturate_cast<uchar>((1 - fy) * top + fy * bottom);
+  }
+  return out;
+}
+
 }  // namespace
 
 SpriteDraw compositeSprite(const SpriteFrame& sprite, const SpritePlacement& placement,
@@ -73,10 +92,10 @@ SpriteDraw compositeSprite(const SpriteFrame& sprite, const SpritePlacement& pla
       if (!(s > 0)) continue;
       const Eigen::Vector3d P = s * ray, d = P - plane.foot;
       const double l = plane.right.dot(d), h = plane.up.dot(d);
-      const int u = int(std::floor(sprite.foot.x + (placement.mirrored ? -l : l) * plane.ppm));
-      const int v = int(std::floor(sprite.foot.y - h * plane.ppm));
+      const double u = sprite.foot.x + (placement.mirrored ? -l : l) * plane.ppm;
+      const double v = sprite.foot.y - h * plane.ppm;
       if (u < 0 || v < 0 || u >= sprite.bgra.cols || v >= sprite.bgra.rows) continue;
-      const cv::Vec4b texel = sprite.bgra.at<cv::Vec4b>(v, u);
+      const cv::Vec4b texel = bilinear(sprite.bgra, u, v);
       if (texel[3] < 128) continue;
       ++draw.pixels;
       // The front of the elliptical cross-section round the plane's axis (arms beyond the

@@ -29,6 +29,10 @@ struct Agent {
   PersonAppearance person;  ///< kind == Person
   CarAppearance car;        ///< kind == Car
   double stride = 1.4;      ///< person: m per gait cycle (two steps)
+  /// person with a real appearance (SpritePeople.h): its sprite sequence (-1: rendered body)
+  /// and height, m.
+  int sprite_sequence = -1;
+  double sprite_height_m = 0;
 };
 
 /// A person on `path` with random clothing (textures added to `textures`) and a random height
@@ -45,7 +49,8 @@ struct AgentState {
 };
 AgentState agentStateAt(const Agent& agent, double t);
 
-/// Appends the agent's triangles at time t (labelled with agent.id).
+/// Appends the agent's triangles at time t (labelled with agent.id); none for a person with a
+/// sprite (SpritePeople draws it).
 void addAgentMesh(Mesh& mesh, const Agent& agent, double t);
 
 /// Ground truth of every agent at least partly inside the image of a camera at T_world_camera,

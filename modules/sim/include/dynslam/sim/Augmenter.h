@@ -18,6 +18,7 @@
 #include <dynslam/sim/ScenarioOptions.h>
 #include <dynslam/sim/SimFrame.h>
 #include <dynslam/sim/SplineTrajectory.h>
+#include <dynslam/sim/SpritePeople.h>
 #include <dynslam/sim/Texture.h>
 
 #include <memory>
@@ -103,6 +104,7 @@ class Augmenter : public Sequence {
   void synthesizeInertialSensors();
 
   ScenarioOptions options_;
+  std::unique_ptr<SpritePeople> sprites_;  ///< [People] appearance = video
   std::string rawlog_path_;
   std::vector<RealFrame> frames_;
   double start_time_ = 0;

@@ -19,6 +19,7 @@ enum RandomStream : uint64_t {
   kImuStream = 1,       ///< IMU noise and bias walk
   kGnssStream = 2,      ///< GNSS noise
   kFloorStream = 3,     ///< augment mode's floor RANSAC
+  kSpriteStream = 4,    ///< which sprite sequence and height each real-appearance person takes
   kFrameStreams = 1000  ///< + frame index: that frame's image noise
 };
 

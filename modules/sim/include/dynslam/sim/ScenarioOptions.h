@@ -60,6 +60,8 @@ struct PeopleOptions : core::Options {
   std::string interaction = "high";
   double stride = 1.4;
   std::string waypoints;
+  std::string appearance = "rendered";  ///< rendered | video (SpritePeople.h)
+  std::string sprites;                  ///< the sprite bank for appearance = video
 
   void describe(core::OptionVisitor& v) override;
 };

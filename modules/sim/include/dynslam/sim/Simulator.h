@@ -7,6 +7,7 @@
 #include <dynslam/sim/Scene.h>
 #include <dynslam/sim/SimFrame.h>
 #include <dynslam/sim/SplineTrajectory.h>
+#include <dynslam/sim/SpritePeople.h>
 
 #include <memory>
 
@@ -38,6 +39,7 @@ class Simulator : public Sequence {
   core::CameraIntrinsics camera_;
   TextureLibrary textures_;
   Scene scene_;
+  std::unique_ptr<SpritePeople> sprites_;  ///< [People] appearance = video
   std::unique_ptr<SplineTrajectory> trajectory_;
   Eigen::Isometry3d T_body_camera_ = Eigen::Isometry3d::Identity();
   std::vector<ImuMeasurement> imu_;
