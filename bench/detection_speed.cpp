@@ -8,6 +8,8 @@
 //   build/bin/bench-detection [--frames 50] [--model ../shared/models/yolox_nano.onnx]
 //                             [--video /usr/share/doc/opencv-doc/examples/data/vtest.avi]
 //                             [--realtime-seconds 4]
+#include "detection_accuracy.h"
+
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/detection/HogPeopleDetector.h>
 #include <dynslam/detection/OnnxYoloDetector.h>
@@ -43,7 +45,8 @@ std::vector<core::Frame> sampleFrames(const std::string& video_path, int count) 
     cv::Mat image;
     if (!video.read(image)) break;
     core::Frame frame;
-    frame.index = static_cast<std::size_t>(i);
+    frame.index = static_cast<std::size_t>(i) * static_cast<std::size_t>(total) /
+                  static_cast<std::size_t>(count);  // the video's frame (objects.txt's with --truth)
     frame.t = i / 30.0;
     cv::resize(image, frame.rgb, cv::Size(640, 480), 0, 0, cv::INTER_AREA);
     frames.push_back(frame);
@@ -93,8 +96,31 @@ double realtimeRate(std::unique_ptr<detection::Detector> detector,
   return delivered / (msSince(start) / 1000.0);
 }
 
+/// --truth: recall and precision of YOLOX-nano (416, 320) and HOG on the sampled frames.
+void printAccuracy(const core::CommandLine& cl, const std::vector<core::Frame>& frames,
+                   std::unique_ptr<detection::Detector> yolo416,
+                   std::unique_ptr<detection::Detector> yolo320) {
+  const double minVisible = cl.optionalDouble("--min-visible").value_or(0.5);
+  const auto truth = bench::readTruePeople(cl.required("--truth"), minVisible);
+  std::printf("\naccuracy against %s: people at least %.2f visible, box IoU >= 0.5\n",
+              cl.required("--truth").c_str(), minVisible);
+  std::printf("%-34s %8s %9s %8s %8s %8s\n", "detector", "recall", "precision", "found", "missed",
+              "false+");
+  detection::HogPeopleDetector hog({}, detection::ClassMap());
+  const std::pair<const char*, detection::Detector*> detectors[] = {
+      {"yolox_nano input 416", yolo416.get()},
+      {"yolox_nano input 320", yolo320.get()},
+      {"hog people (min_height 128)", &hog}};
+  for (const auto& [name, detector] : detectors) {
+    const bench::DetectionScore s = bench::scoreDetector(*detector, frames, truth);
+    std::printf("%-34s %8.3f %9.3f %8zu %8zu %8zu\n", name, s.recall(), s.precision(), s.found,
+                s.missed, s.false_positives);
+  }
+}
+
 const char* const kUsage =
     R"(usage: bench-detection [--frames N] [--model FILE.onnx] [--video FILE] [--realtime-seconds S]
+                       [--truth objects.txt [--min-visible F]]
        bench-detection -h | --help
 
 Detector latency on real pedestrian video: YOLOX-nano at network inputs 416 and 320 (trimmed
@@ -109,6 +135,12 @@ Options:
   --video FILE           the video (default
                          /usr/share/doc/opencv-doc/examples/data/vtest.avi, package opencv-doc)
   --realtime-seconds S   seconds of each real-time measurement (default 4)
+  --truth objects.txt    also score the detectors against a simulated sequence's ground truth
+                         (--video DIR/sim_Images/colour_%06d.png of the same dynslam-sim output):
+                         person boxes matched one to one at IoU >= 0.5 with the true amodal boxes;
+                         recall over the people at least --min-visible visible, precision over
+                         every detection (one on a less visible person counts neither way)
+  --min-visible F        the visible share from which a person must be found (default 0.5)
   -h, --help             print this text and exit
 
 Exit codes: 0 done, 1 the model or the video cannot be read, 2 usage.
@@ -118,7 +150,8 @@ Exit codes: 0 done, 1 the model or the video cannot be read, 2 usage.
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-detection", [&] {
-    core::CommandLine cl({"--frames", "--model", "--video", "--realtime-seconds"}, {});
+    core::CommandLine cl(
+        {"--frames", "--model", "--video", "--realtime-seconds", "--truth", "--min-visible"}, {});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::fputs(kUsage, stdout);
@@ -152,6 +185,7 @@ int main(int argc, char** argv) {
     benchLatency("yolox_nano input 416, 1 thread", *yolo(416, 1), frames);
     benchLatency("yolox_nano input 320, 1 thread", *yolo(320, 1), frames);
     cv::setNumThreads(default_threads);
+    if (cl.has("--truth")) printAccuracy(cl, frames, yolo(416, 0), yolo(320, 0));
 
     std::printf(
         "\nreal-time mode: detections/s the detector thread delivers while the pipeline thread "

@@ -10,12 +10,19 @@
 # paper's dynamic factors, dynamic_handling = full), and prints APE and FPS.
 # --input 7scenes: the 600 real RGB-D frames of ../shared/data/7scenes, converted to a rawlog, run
 # through params/7scenes_rgbd_odometry.ini (the dense RGB-D odometry baseline).
+# --input realpeople: real people's pixels (cut from Debian opencv-doc's vtest.avi by
+# dynslam-sprites) walking through those 600 real frames (params/sim/realpeople_7scenes.ini),
+# run through params/realpeople_vio.ini: the whole system with the real detector, YOLOX-nano
+# (../shared/models/yolox_nano.onnx), and no ground truth but for the score.
 #
-#   bash scripts/demo.sh [--input sim|7scenes] [--config params/FILE.ini] [--no-build]
+#   bash scripts/demo.sh [--input sim|7scenes|realpeople] [--config params/FILE.ini] [--no-build]
 #                        [--set Section.key=value]...
-#     --input sim|7scenes  the simulated scenario (default) or the real 7-Scenes frames
-#     --config FILE.ini    the dynslam configuration (default params/sim_vio.ini, or
-#                          params/7scenes_rgbd_odometry.ini with --input 7scenes)
+#     --input sim|7scenes|realpeople
+#                          the simulated scenario (default), the real 7-Scenes frames, or
+#                          those frames with real-appearance people and the real detector
+#     --config FILE.ini    the dynslam configuration (default params/sim_vio.ini,
+#                          params/7scenes_rgbd_odometry.ini with --input 7scenes,
+#                          params/realpeople_vio.ini with --input realpeople)
 #     --no-build           use the programs already in $BUILD_DIR/bin (no package check, no
 #                          build)
 #     --set Section.key=value
@@ -24,14 +31,16 @@
 #                          their iteration count, not the clock, and the trajectory is the same
 #                          to the byte from run to run, whatever else the machine is doing
 #     -h, --help           this text
-# Without --no-build it builds dynslam, dynslam-eval and dynslam-sim (--input sim) or
-# sevenscenes2rawlog (--input 7scenes), installing missing Debian packages first.
+# Without --no-build it builds dynslam, dynslam-eval and dynslam-sim (--input sim),
+# sevenscenes2rawlog (--input 7scenes) or all of those and dynslam-sprites (--input realpeople),
+# installing missing Debian packages first.
 # Environment: BUILD_DIR (default build/), DYNSLAM_SHARED_DIR (default ../shared).
 # Outputs in build/demo/<input>_run: trajectory.tum, objects/ID.tum, map.3Dscene (open it with
 # SceneViewer3D), timing.csv, keyframes.csv, summary.json (with the APE), frames/ (annotated
 # PNGs and annotated.avi), ape.json and ape.png (dynslam-eval's plot); formats in
 # docs/programs.md.
-# Exit codes: 0 done, 1 a build, a program or the data failed (7-Scenes absent), 2 usage,
+# Exit codes: 0 done, 1 a build, a program or the data failed (7-Scenes, vtest.avi or the
+# YOLOX-nano model absent), 2 usage,
 # 130 interrupted (Ctrl-C).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -51,23 +60,50 @@ while [ $# -gt 0 ]; do
   esac
 done
 case "$INPUT" in
-  sim|7scenes) ;;
-  *) echo "demo: --input must be sim or 7scenes, not '$INPUT'" >&2; exit 2 ;;
+  sim|7scenes|realpeople) ;;
+  *) echo "demo: --input must be sim, 7scenes or realpeople, not '$INPUT'" >&2; exit 2 ;;
 esac
 
 # Only the programs this input runs: a first demo does not wait for the tests to build.
 if [ "$BUILD" = 1 ]; then
-  if [ "$INPUT" = sim ]; then
-    bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval dynslam-sim
-  else
-    bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval sevenscenes2rawlog
-  fi
+  case "$INPUT" in
+    sim) bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval dynslam-sim ;;
+    7scenes) bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval sevenscenes2rawlog ;;
+    realpeople) bash "$ROOT/scripts/setup.sh" dynslam dynslam-eval dynslam-sim dynslam-sprites \
+                  sevenscenes2rawlog ;;
+  esac
 fi
 BIN="$BUILD_DIR/bin"
 DEMO="$BUILD_DIR/demo"
 RUN="$DEMO/${INPUT}_run"
 mkdir -p "$DEMO"
 rm -rf "$RUN"
+
+# --input realpeople: the sprite bank from vtest.avi, the 7-Scenes frames with its people
+# rendered in (both cached like the simulated scenario), and the real detector's model.
+realPeople() {
+  local vtest=/usr/share/doc/opencv-doc/examples/data/vtest.avi model="$SHARED/models/yolox_nano.onnx"
+  for f in "$vtest" "$model"; do
+    [ -f "$f" ] || { echo "demo: $f is absent (opencv-doc package; ../shared/models)" >&2; exit 1; }
+  done
+  [ "$DEMO/sprites_vtest/bank.txt" -nt "$BIN/dynslam-sprites" ] ||
+    "$BIN/dynslam-sprites" --video "$vtest" --out "$DEMO/sprites_vtest"
+  local sim="$DEMO/realpeople"
+  local render=("$BIN/dynslam-sim" --config "$ROOT/params/sim/realpeople_7scenes.ini" --out "$sim"
+                --set "Augment.rawlog=$DEMO/7scenes.rawlog" --set "People.sprites=$DEMO/sprites_vtest")
+  local stamp
+  stamp="${render[*]} $(stat -c %Y "$BIN/dynslam-sim") $(stat -c %Y "$DEMO/sprites_vtest/bank.txt")"
+  if [ ! -f "$sim/sim.rawlog" ] || [ "$(cat "$sim/demo_command.txt" 2>/dev/null)" != "$stamp" ]; then
+    rm -rf "$sim"
+    echo "demo: rendering real people into the 600 7-Scenes frames ($sim)"
+    "${render[@]}" --quiet
+    echo "$stamp" > "$sim/demo_command.txt"
+  fi
+  CONFIG="${CONFIG:-$ROOT/params/realpeople_vio.ini}"
+  RAWLOG="$sim/sim.rawlog"
+  GT="$sim/groundtruth.tum"
+  EXTRA=(--set "Detection.model=$model")
+}
 
 if [ "$INPUT" = sim ]; then
   CONFIG="${CONFIG:-$ROOT/params/sim_vio.ini}"
@@ -86,8 +122,8 @@ if [ "$INPUT" = sim ]; then
   GT="$SIM/groundtruth.tum"
   EXTRA=(--set "Detection.objects=$SIM/objects.txt" --set Estimator.dynamic_handling=full)
 else
-  CONFIG="${CONFIG:-$ROOT/params/7scenes_rgbd_odometry.ini}"
-  SCENES="${DYNSLAM_SHARED_DIR:-$ROOT/../shared}/data/7scenes"
+  SHARED="${DYNSLAM_SHARED_DIR:-$ROOT/../shared}"
+  SCENES="$SHARED/data/7scenes"
   if [ ! -d "$SCENES" ]; then
     echo "demo: $SCENES is absent (it ships beside the repository as ../shared)" >&2
     exit 1
@@ -95,11 +131,15 @@ else
   if [ ! "$DEMO/7scenes.rawlog" -nt "$BIN/sevenscenes2rawlog" ]; then
     "$BIN/sevenscenes2rawlog" --in "$SCENES" --out "$DEMO/7scenes.rawlog"
   fi
-  RAWLOG="$DEMO/7scenes.rawlog"
-  GT="$DEMO/7scenes.gt.tum"
-  EXTRA=()
+  if [ "$INPUT" = 7scenes ]; then
+    CONFIG="${CONFIG:-$ROOT/params/7scenes_rgbd_odometry.ini}"
+    RAWLOG="$DEMO/7scenes.rawlog"
+    GT="$DEMO/7scenes.gt.tum"
+    EXTRA=()
+  else
+    realPeople
+  fi
 fi
-
 "$BIN/dynslam" --config "$CONFIG" --rawlog "$RAWLOG" --out "$RUN" --gt "$GT" \
   --frames "$RUN/frames" "${EXTRA[@]}" "${SETS[@]}"
 "$BIN/dynslam-eval" ape "$GT" "$RUN/trajectory.tum" --align se3 \

@@ -2,7 +2,9 @@
 # Renders every scenario of params/sim/ in full, writes a contact sheet of each (colour | depth |
 # instance labels at evenly spread times) to docs/images/sim_<name>.png, and prints what
 # `rawlog-edit --info` counts in each rawlog. The augmented 7-Scenes scenario first converts
-# ../shared/data/7scenes with sevenscenes2rawlog (skipped, saying so, when it is absent).
+# ../shared/data/7scenes with sevenscenes2rawlog (skipped, saying so, when it is absent); the
+# real-appearance ones (appearance = video) first cut the sprite bank from Debian opencv-doc's
+# vtest.avi with dynslam-sprites into DIR/sprites_vtest (skipped when opencv-doc is absent).
 #
 #   bash scripts/sim_scenarios.sh [--out DIR] [--only NAME] [--duration S]
 #     --out DIR       where the sequences go, one folder per scenario (default build/sim; the
@@ -29,6 +31,7 @@ while (($#)); do
   esac
 done
 SHARED="${DYNSLAM_SHARED_DIR:-$ROOT/../shared}"
+VTEST=/usr/share/doc/opencv-doc/examples/data/vtest.avi  # real people for appearance = video
 mkdir -p "$OUT" "$ROOT/docs/images"
 
 counts() {  # "RGBD 901, IMU 6001, GPS 1501" from rawlog-edit's table (run from the folder)
@@ -49,6 +52,15 @@ for ini in "$ROOT"/params/sim/*.ini; do
     [ "$OUT/7scenes.rawlog" -nt "$BIN/sevenscenes2rawlog" ] ||
       "$BIN/sevenscenes2rawlog" --in "$SHARED/data/7scenes" --out "$OUT/7scenes.rawlog" >/dev/null
     args+=(--set "Augment.rawlog=$OUT/7scenes.rawlog")
+  fi
+  if grep -q '^appearance *= *video' "$ini"; then
+    if [ ! -f "$VTEST" ]; then
+      echo "$name: skipped, $VTEST is absent (Debian package opencv-doc)"
+      continue
+    fi
+    [ "$OUT/sprites_vtest/bank.txt" -nt "$BIN/dynslam-sprites" ] ||
+      "$BIN/dynslam-sprites" --video "$VTEST" --out "$OUT/sprites_vtest" >/dev/null
+    args+=(--set "People.sprites=$OUT/sprites_vtest")
   fi
   start=$SECONDS
   "$BIN/dynslam-sim" --config "$ini" --out "$OUT/$name" --quiet "${args[@]}" "${EXTRA[@]}" \
