@@ -13,9 +13,11 @@
 #include <mrpt/opengl/CSetOfLines.h>
 #include <opencv2/videoio.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace fs = std::filesystem;
 using dynslam::testing::binDir;
@@ -159,6 +161,12 @@ void checkSummaryApe(const std::string& sim, const std::string& out, const std::
   EXPECT_LT(jsonNumber(summary, "rmse", ape), 0.1);
   EXPECT_NE(summary.find("\"median_ms\""), std::string::npos);
   EXPECT_GT(jsonNumber(summary, "fps"), 0.0);
+  // The cores the run kept busy: some work, and no more than its threads could do (reader,
+  // pipeline, and at most the machine's cores for OpenCV and Ceres).
+  const double cores = jsonNumber(summary, "cpu_cores");
+  EXPECT_GT(cores, 0.05);
+  EXPECT_LE(cores, std::max(3.0, 1.0 + std::thread::hardware_concurrency()));
+  EXPECT_NEAR(jsonNumber(summary, "cpu_time_s"), cores * jsonNumber(summary, "wall_time_s"), 0.01);
 }
 
 void checkFramesAndVideo(const std::string& frames) {

@@ -4,6 +4,8 @@
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/io/FrameReader.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <fstream>
 
@@ -82,6 +84,13 @@ void writeStages(core::JsonWriter& j, const core::Pipeline* pipeline) {
 
 }  // namespace
 
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
                   const io::FrameReader* reader, const core::Pipeline* pipeline) {
   std::ofstream out(path);
@@ -98,6 +107,9 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   j.member("imu_samples", rec.imu_samples).member("gnss_fixes", rec.gnss_fixes);
   j.member("wall_time_s", rec.wall_s);
   j.member("fps", rec.wall_s > 0 ? rec.frames / rec.wall_s : 0.0);
+  // Cores the run kept busy on average: what a robot's planner has left of the machine.
+  j.member("cpu_time_s", rec.cpu_s);
+  j.member("cpu_cores", rec.wall_s > 0 ? rec.cpu_s / rec.wall_s : 0.0);
   if (rec.ape)
     writeApe(j, args, *rec.ape);
   else if (!rec.ape_error.empty())

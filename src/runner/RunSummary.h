@@ -19,6 +19,9 @@ class FrameReader;
 
 namespace dynslam::runner {
 
+/// User + system CPU time this process has used so far, all threads, s.
+double processCpuSeconds();
+
 /// What the run did, for summary.json.
 struct RunRecord {
   std::string status = "ok";
@@ -26,6 +29,7 @@ struct RunRecord {
   size_t frames = 0, poses = 0, imu_samples = 0, gnss_fixes = 0;
   size_t objects = 0;  ///< object trajectories written (objects/<id>.tum)
   double wall_s = 0.0;
+  double cpu_s = 0.0;  ///< user + system time of every thread over the run
   bool estimator = false;
   std::vector<double> lag_ms;  ///< --realtime: how late each frame reached the pipeline
   std::vector<double> dt_ms;   ///< --realtime: stamp differences between frames

@@ -130,6 +130,7 @@ class DynslamRun {
     }
     rec_.poses = trajectory_ ? trajectory_->count() : 0;
     rec_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    rec_.cpu_s = processCpuSeconds() - startCpu_;
     finishOutputs();
     report();
     return exitCode();
@@ -296,6 +297,7 @@ class DynslamRun {
 
   const RunnerArgs& args_;
   const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  const double startCpu_ = processCpuSeconds();
   RunRecord rec_;
   core::Trajectory groundTruth_;
   std::optional<core::Pipeline> pipeline_;
