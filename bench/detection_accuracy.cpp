@@ -1,6 +1,7 @@
 #include "detection_accuracy.h"
 
 #include <dynslam/core/ObjectGroundTruth.h>
+#include <dynslam/tracking/DepthIoU.h>
 
 #include <algorithm>
 #include <tuple>
@@ -16,15 +17,6 @@ std::map<std::size_t, std::vector<TruePerson>> readTruePeople(const std::string&
   return people;
 }
 
-namespace {
-
-double iou(const cv::Rect& a, const cv::Rect& b) {
-  const double inter = (a & b).area();
-  return inter > 0 ? inter / double(a.area() + b.area() - inter) : 0.0;
-}
-
-}  // namespace
-
 DetectionScore scoreDetector(detection::Detector& detector, const std::vector<core::Frame>& frames,
                              const std::map<std::size_t, std::vector<TruePerson>>& truth) {
   DetectionScore score;
@@ -38,7 +30,9 @@ DetectionScore scoreDetector(detection::Detector& detector, const std::vector<co
     std::vector<std::tuple<double, size_t, size_t>> pairs;  // (-iou, detection, person)
     for (size_t d = 0; d < boxes.size(); ++d)
       for (size_t p = 0; p < people.size(); ++p)
-        if (const double v = iou(boxes[d], people[p].box); v >= 0.5) pairs.emplace_back(-v, d, p);
+        if (const double v = tracking::boxIoU(cv::Rect2f(boxes[d]), cv::Rect2f(people[p].box));
+            v >= 0.5)
+          pairs.emplace_back(-v, d, p);
     std::sort(pairs.begin(), pairs.end());
     std::vector<bool> detectionUsed(boxes.size()), personUsed(people.size());
     for (const auto& [negIou, d, p] : pairs) {

@@ -58,13 +58,13 @@ cv::VideoCapture openVideo(const std::string& path) {
   return video;
 }
 
-/// Every `step`-th frame's copy for the median background, counting the frames as it reads.
-std::vector<cv::Mat> sampleFrames(const std::string& path, int wanted, size_t& count) {
+/// Every `step`-th frame's copy for the median background.
+std::vector<cv::Mat> sampleFrames(const std::string& path, int wanted) {
   cv::VideoCapture video = openVideo(path);
   const double reported = video.get(cv::CAP_PROP_FRAME_COUNT);
   const size_t step = std::max<size_t>(1, size_t(reported > 0 ? reported : 600) / size_t(wanted));
   std::vector<cv::Mat> samples;
-  count = 0;
+  size_t count = 0;
   for (cv::Mat frame; video.read(frame); ++count) {
     if (frame.type() != CV_8UC3)
       throw std::runtime_error("--video " + path + ": frame " + std::to_string(count) +
@@ -96,9 +96,8 @@ int run(const core::CommandLine& cl) {
   // A failed run must not leave an earlier bank looking like this video's.
   fs::remove(fs::path(out) / "bank.txt");
 
-  size_t frames = 0;
   sim::SpriteExtractor extractor(
-      sim::medianBackground(sampleFrames(videoPath, int(backgroundFrames), frames)), options);
+      sim::medianBackground(sampleFrames(videoPath, int(backgroundFrames))), options);
   cv::VideoCapture video = openVideo(videoPath);
   for (cv::Mat frame; video.read(frame);) extractor.add(frame);
   const sim::SpriteBank bank = extractor.finish(fs::path(videoPath).filename().string());

@@ -90,8 +90,7 @@ Sighting SpriteExtractor::Impl::sight(const cv::Mat& bgr, const ForegroundBlob& 
   s.crop_origin = crop.tl();
   cv::Mat alpha(crop.size(), CV_8UC1, cv::Scalar(0));
   blob.mask.copyTo(alpha(blob.box - crop.tl()));
-  cv::Mat channels[] = {bgr(crop).clone(), alpha};
-  cv::merge(std::vector<cv::Mat>{channels[0], channels[1]}, s.bgra);
+  cv::merge(std::vector<cv::Mat>{bgr(crop), alpha}, s.bgra);
   const int m = o.border_margin_px;
   if (blob.box.x < m || blob.box.y < m || blob.box.br().x > bgr.cols - m ||
       blob.box.br().y > bgr.rows - m)

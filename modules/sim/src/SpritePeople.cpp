@@ -21,7 +21,7 @@ void SpritePeople::dress(std::vector<Agent>& agents, std::mt19937_64& rng) const
   }
 }
 
-const SpriteFrame& SpritePeople::frameAt(const Agent& agent, double t,
+const SpriteFrame& SpritePeople::frameAt(const Agent& agent, double t, double heading,
                                          const Eigen::Isometry3d& T_world_camera,
                                          bool& mirrored) const {
   const SpriteSequence& seq = bank_.sequences.at(size_t(agent.sprite_sequence));
@@ -36,9 +36,6 @@ const SpriteFrame& SpritePeople::frameAt(const Agent& agent, double t,
          seq.frames[k + 1].walked_heights * agent.sprite_height_m <= walked)
     ++k;
   // Mirrored when the person walks the other way across the image than the sprite's walker.
-  Eigen::Vector2d xy;
-  double heading = 0;
-  agent.path.at(t, xy, heading);
   const Eigen::Vector3d dir(std::cos(heading), std::sin(heading), 0);
   const double across = (T_world_camera.linear().transpose() * dir).x();
   mirrored = across * seq.footVelocity().x < 0;
@@ -53,11 +50,11 @@ std::vector<ObjectTruth> SpritePeople::draw(const std::vector<Agent>& agents, do
   for (size_t i = 0; i < agents.size(); ++i) {
     const Agent& agent = agents[i];
     if (agent.sprite_sequence < 0) continue;
-    SpritePlacement placement;
-    const SpriteFrame& sprite = frameAt(agent, t, T_world_camera, placement.mirrored);
     Eigen::Vector2d xy;
     double heading = 0;
     agent.path.at(t, xy, heading);
+    SpritePlacement placement;
+    const SpriteFrame& sprite = frameAt(agent, t, heading, T_world_camera, placement.mirrored);
     placement.foot_world = Eigen::Vector3d(xy.x(), xy.y(), 0);
     placement.height_m = agent.sprite_height_m;
     const SpriteDraw d =

@@ -29,9 +29,10 @@ class SpritePeople {
                                 RenderOutput& frame) const;
 
  private:
-  /// The frame of the person's sequence at time t, and whether to mirror it.
-  const SpriteFrame& frameAt(const Agent& agent, double t, const Eigen::Isometry3d& T_world_camera,
-                             bool& mirrored) const;
+  /// The frame of the person's sequence at time t (walking along `heading`), and whether to
+  /// mirror it.
+  const SpriteFrame& frameAt(const Agent& agent, double t, double heading,
+                             const Eigen::Isometry3d& T_world_camera, bool& mirrored) const;
 
   SpriteBank bank_;
 };
