@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dynslam::bench {
@@ -16,6 +17,23 @@ struct TruePerson {
   cv::Rect box;          ///< amodal, clipped to the image
   bool counted = false;  ///< at least min_visible visible
 };
+
+/// One-to-one pairs (index in `detected`, index in `truth`) of boxes overlapping at IoU >=
+/// `min_iou`, the largest overlaps first (the greedy matching of PASCAL VOC and COCO).
+std::vector<std::pair<size_t, size_t>> matchBoxes(const std::vector<cv::Rect>& detected,
+                                                  const std::vector<cv::Rect>& truth,
+                                                  double min_iou = 0.5);
+
+/// A true object's box and category, for matchDetections.
+struct TrueBox {
+  cv::Rect box;
+  std::string category;
+};
+
+/// For each detection, the index in `truth` of the box of its own category it is matched to
+/// (matchBoxes within each category), or -1.
+std::vector<int> matchDetections(const std::vector<core::Detection>& detections,
+                                 const std::vector<TrueBox>& truth, double min_iou = 0.5);
 
 /// objects.txt's people by frame.
 std::map<std::size_t, std::vector<TruePerson>> readTruePeople(const std::string& objects_txt,
@@ -29,8 +47,10 @@ struct DetectionScore {
   }
 };
 
-/// `detector` on `frames` (each frame's index is its frame in objects.txt).
+/// `detector` on `frames` (each frame's index is its frame in objects.txt); with `draw_dir`, each
+/// frame with its true and detected boxes is written there as detections_NNNNNN.png.
 DetectionScore scoreDetector(detection::Detector& detector, const std::vector<core::Frame>& frames,
-                             const std::map<std::size_t, std::vector<TruePerson>>& truth);
+                             const std::map<std::size_t, std::vector<TruePerson>>& truth,
+                             const std::string& draw_dir = "");
 
 }  // namespace dynslam::bench

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -45,8 +46,9 @@ std::vector<core::Frame> sampleFrames(const std::string& video_path, int count) 
     cv::Mat image;
     if (!video.read(image)) break;
     core::Frame frame;
-    frame.index = static_cast<std::size_t>(i) * static_cast<std::size_t>(total) /
-                  static_cast<std::size_t>(count);  // the video's frame (objects.txt's with --truth)
+    frame.index =
+        static_cast<std::size_t>(i) * static_cast<std::size_t>(total) /
+        static_cast<std::size_t>(count);  // the video's frame (objects.txt's with --truth)
     frame.t = i / 30.0;
     cv::resize(image, frame.rgb, cv::Size(640, 480), 0, 0, cv::INTER_AREA);
     frames.push_back(frame);
@@ -111,8 +113,11 @@ void printAccuracy(const core::CommandLine& cl, const std::vector<core::Frame>& 
       {"yolox_nano input 416", yolo416.get()},
       {"yolox_nano input 320", yolo320.get()},
       {"hog people (min_height 128)", &hog}};
+  const std::string drawDir = cl.valueOr("--draw", "");
+  if (!drawDir.empty()) std::filesystem::create_directories(drawDir);
   for (const auto& [name, detector] : detectors) {
-    const bench::DetectionScore s = bench::scoreDetector(*detector, frames, truth);
+    const bench::DetectionScore s = bench::scoreDetector(
+        *detector, frames, truth, detector == yolo416.get() ? drawDir : std::string());
     std::printf("%-34s %8.3f %9.3f %8zu %8zu %8zu\n", name, s.recall(), s.precision(), s.found,
                 s.missed, s.false_positives);
   }
@@ -120,7 +125,7 @@ void printAccuracy(const core::CommandLine& cl, const std::vector<core::Frame>& 
 
 const char* const kUsage =
     R"(usage: bench-detection [--frames N] [--model FILE.onnx] [--video FILE] [--realtime-seconds S]
-                       [--truth objects.txt [--min-visible F]]
+                       [--truth objects.txt [--min-visible F] [--draw DIR]]
        bench-detection -h | --help
 
 Detector latency on real pedestrian video: YOLOX-nano at network inputs 416 and 320 (trimmed
@@ -141,6 +146,9 @@ Options:
                          recall over the people at least --min-visible visible, precision over
                          every detection (one on a less visible person counts neither way)
   --min-visible F        the visible share from which a person must be found (default 0.5)
+  --draw DIR             with --truth: write each scored frame with YOLOX-nano (416)'s boxes to
+                         DIR/detections_NNNNNN.png (green: a person to find, grey: less visible,
+                         blue: a detection matched, red: a false positive)
   -h, --help             print this text and exit
 
 Exit codes: 0 done, 1 the model or the video cannot be read, 2 usage.
@@ -150,8 +158,9 @@ Exit codes: 0 done, 1 the model or the video cannot be read, 2 usage.
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-detection", [&] {
-    core::CommandLine cl(
-        {"--frames", "--model", "--video", "--realtime-seconds", "--truth", "--min-visible"}, {});
+    core::CommandLine cl({"--frames", "--model", "--video", "--realtime-seconds", "--truth",
+                          "--min-visible", "--draw"},
+                         {});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::fputs(kUsage, stdout);

@@ -29,7 +29,7 @@
 #include <dynslam/frontend/DynamicClassificationStage.h>
 #include <dynslam/io/FrameReader.h>
 #include <dynslam/io/SensorSync.h>
-#include <runner/BuiltinStages.h>
+#include <dynslam/system/BuiltinStages.h>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -87,7 +87,7 @@ void printRatio(const char* what, double value, double target, bool atLeast, con
 /// FeatureTracking when `standIn`.
 std::vector<StageSlot> makeStages(const core::IniConfig& cfg, bool standIn) {
   core::StageRegistry registry;
-  runner::registerBuiltinStages(registry);
+  system::registerBuiltinStages(registry);
   std::vector<StageSlot> stages;
   for (const auto& e : core::pipelineStageEntries(cfg)) {
     StageSlot slot{e.entry, nullptr, {}};
@@ -315,7 +315,7 @@ void run(const Settings& s) {
   }
   const auto cfg = core::IniConfig::fromFile(s.config, overrides);
   core::StageRegistry registry;
-  runner::registerBuiltinStages(registry);
+  system::registerBuiltinStages(registry);
   const bool standIn =
       s.features == "klt" || (s.features.empty() && !registry.contains("FeatureTracking"));
   std::vector<StageSlot> stages = makeStages(cfg, standIn);

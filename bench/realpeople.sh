@@ -5,6 +5,11 @@
 # same frames with no people inserted, and per seed:
 #   - YOLOX-nano (input 416) and HOG on 100 frames against the ground truth: recall of the people
 #     at least half visible and precision, box IoU >= 0.5 (bench-detection --truth);
+#   - the depth-threshold masks from YOLOX-nano's boxes against the sprite labels, every 6th frame
+#     (bench-segmentation on YOLOX-nano's boxes, the system's [Segmentation]): mean mask IoU of the people
+#     at least half visible it boxed, and the mean error of their object depth d_t;
+#   - the tracker on YOLOX-nano's boxes, every frame (bench-tracking with the system's [Tracking]
+#     and [Segmentation]): MOTA and IDF1;
 #   - APE RMSE (SE(3)) of the whole system with YOLOX-nano (params/realpeople_vio.ini) as full,
 #     remove and none, of the same ini on the frames without people, and of the dense RGB-D
 #     odometry (params/7scenes_rgbd_odometry.ini) with and without the people;
@@ -74,8 +79,19 @@ recallPrecision() {
 
 ROWS="$OUT/rows.txt"
 : > "$ROWS"
-COLUMNS="seed yolo_rec yolo_pre hog_rec hog_pre full remove none no_people odom odom_none f/nopeople f/remove f/none"
-printf '%-5s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %10s %9s %9s\n' $COLUMNS
+# maskScores FILE: bench-segmentation's mean mask IoU and mean d_t error (%) of the people at least
+# half visible.
+maskScores() {
+  awk '/summary, people >= 50 % visible/ { gsub(/[(),%]/, " "); print $9, $14 }' "$1"
+}
+
+# motScores FILE: bench-tracking's MOTA and IDF1.
+motScores() {
+  awk '$1 == "MOTA" { mota = $2 } $1 == "IDF1" { idf1 = $2 } END { print mota, idf1 }' "$1"
+}
+
+COLUMNS="seed yolo_rec yolo_pre hog_rec hog_pre mask_iou dt_err mota idf1 full remove none no_people odom odom_none f/nopeople f/remove f/none"
+printf '%-5s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %10s %9s %9s\n' $COLUMNS
 for seed in $SEEDS; do
   render "$seed" people
   render "$seed" nopeople --set People.walkers=0 --set People.standing=0
@@ -84,6 +100,14 @@ for seed in $SEEDS; do
     --model "$MODEL" --truth "$S/objects.txt" > "$S/detection.txt" 2>&1
   read -r yr yp < <(recallPrecision "$S/detection.txt" "yolox_nano input 416")
   read -r hr hp < <(recallPrecision "$S/detection.txt" "hog people")
+  scene=(--config "$ROOT/params/sim/realpeople_7scenes.ini" --set "Augment.rawlog=$OUT/7scenes.rawlog"
+         --set "People.sprites=$OUT/sprites" --set "Scenario.seed=$seed")
+  "$B/bench-segmentation" "${scene[@]}" --every 6 --boxes yolox --model "$MODEL" \
+    --seg-config "$ROOT/params/realpeople_vio.ini" > "$S/segmentation.txt" 2>&1
+  read -r miou dterr < <(maskScores "$S/segmentation.txt")
+  "$B/bench-tracking" "${scene[@]}" --detector yolox --model "$MODEL" \
+    --system "$ROOT/params/realpeople_vio.ini" --sweep '' > "$S/tracking.txt" 2>&1
+  read -r mota idf1 < <(motScores "$S/tracking.txt")
   yolo=(--set "Detection.model=$MODEL" --set Estimator.max_solver_time=100)
   full=$(ape "$S" full realpeople_vio.ini "${yolo[@]}")
   remove=$(ape "$S" remove realpeople_vio.ini "${yolo[@]}" --set Estimator.dynamic_handling=remove)
@@ -91,12 +115,11 @@ for seed in $SEEDS; do
   nopeople=$(ape "$N" full realpeople_vio.ini "${yolo[@]}")
   odom=$(ape "$S" odometry 7scenes_rgbd_odometry.ini)
   odomN=$(ape "$N" odometry 7scenes_rgbd_odometry.ini)
-  echo "$seed $yr $yp $hr $hp $full $remove $none $nopeople $odom $odomN" |
-    awk '{ printf "%s %s %s %s %s %s %s %s %s %s %s %.3f %.3f %.3f\n", $1, $2, $3, $4, $5, $6, $7,
-           $8, $9, $10, $11, $6 / $9, $6 / $7, $6 / $8 }' >> "$ROWS"
+  echo "$seed $yr $yp $hr $hp $miou $dterr $mota $idf1 $full $remove $none $nopeople $odom $odomN" |
+    awk '{ printf "%s", $0; printf " %.3f %.3f %.3f\n", $10 / $13, $10 / $11, $10 / $12 }' >> "$ROWS"
   tail -n 1 "$ROWS" | awk '{ printf "%-5s", $1; for (i = 2; i <= NF; ++i) printf " %9.4f", $i;
                              printf "\n" }'
 done
 awk '{ for (i = 2; i <= NF; ++i) s[i] += $i; n++ }
-     END { printf "%-5s", "mean"; for (i = 2; i <= 14; ++i) printf " %9.4f", s[i] / n; printf "\n" }' \
+     END { printf "%-5s", "mean"; for (i = 2; i <= 18; ++i) printf " %9.4f", s[i] / n; printf "\n" }' \
   "$ROWS"

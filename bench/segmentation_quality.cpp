@@ -14,7 +14,8 @@
 // the first stage of a system ini, without copying its keys into --seg-set.
 // Detections: the people and cars at least --min-visible visible (default: the share below which
 // the system's GroundTruthDetector reports nothing, 0.2, as a real detector misses a person
-// hidden that much); --min-visible 0 gives every object with a visible pixel a box.
+// hidden that much); --min-visible 0 gives every object with a visible pixel a box. --boxes yolox
+// takes YOLOX-nano's boxes instead (the real detector's masks; its misses counted apart).
 // Precision (mask pixels that are the person) and recall (the person's pixels in the mask)
 // tell over- from under-segmentation; "box as mask" is the IoU a mask filling the whole box
 // would score. --dump DIR writes the worst masks as images (green: right, red: not the person,
@@ -22,12 +23,13 @@
 // the other overlapping object whose visible depth is nearest d_t: whose surface it took).
 //
 //   build/bin/bench-segmentation [--config params/sim/A.ini]... [--every 3] [--set s.k=v]...
-//        [--seg-set Segmentation.key=value]... [--boxes amodal|visible] [--min-visible 0.2]
+//        [--seg-set Segmentation.key=value]... [--boxes amodal|visible|yolox] [--min-visible 0.2]
 //        [--dump DIR] [--dump-max 12] [--pipeline params/sim_frontend.ini] [--cases FILE.csv]
 //        [--seg-config params/sim_vio.ini]
 // Without --config: indoor_people_high. An augment scene (params/sim/augmented_7scenes.ini, with
 // --set Augment.rawlog=...) is scored the same way: the inserted movers' boxes and instance
 // labels against the real depth they are composited into (real pixels are label 0).
+#include "detection_accuracy.h"
 #include "segmentation_failure_images.h"
 
 #include <dynslam/core/CommandLine.h>
@@ -35,6 +37,7 @@
 #include <dynslam/core/Median.h>
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/detection/GroundTruthDetector.h>
+#include <dynslam/detection/OnnxYoloDetector.h>
 #include <dynslam/segmentation/FloorRemovalStage.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
@@ -278,22 +281,82 @@ struct FrameDetections {
   std::vector<const sim::ObjectTruth*> truths;
 };
 
-FrameDetections detectionsOf(const sim::SimFrame& f, double minVisible, bool visibleBoxes) {
-  FrameDetections out;
-  for (const auto& o : f.objects) {
-    if (o.visible_pixels == 0 || o.visible_fraction < minVisible) continue;
-    core::Detection d;
-    // amodal: the simulator's box (the whole body, hidden parts too); visible: the box
-    // round the visible pixels, as a detector that sees only those might draw it.
-    d.box = visibleBoxes ? cv::boundingRect(f.image.label == o.id) : o.box;
-    d.category = o.category;
-    d.model = o.category == "car" ? core::MotionModel::Rigid : core::MotionModel::NonRigid;
-    d.truth_id = o.id;
-    out.detections.push_back(d);
-    out.truths.push_back(&o);
+/// Where a frame's detections come from (--boxes): the truth's amodal or visible boxes, or
+/// YOLOX-nano on the rendered colour, each of its boxes given the truth it overlaps at IoU >= 0.5
+/// (matchBoxes; one without stays unscored, a person without one is a detector's miss).
+class BoxSource {
+ public:
+  BoxSource(std::string mode, double minVisible, const std::string& model)
+      : mode_(std::move(mode)), minVisible_(minVisible) {
+    if (mode_ != "amodal" && mode_ != "visible" && mode_ != "yolox")
+      throw core::UsageError("--boxes " + mode_ + ": expected amodal, visible or yolox");
+    if (mode_ == "yolox") {
+      detection::OnnxYoloDetectorSettings settings;
+      settings.model = model;
+      yolo_ = std::make_unique<detection::OnnxYoloDetector>(settings, detection::ClassMap());
+    }
   }
-  return out;
-}
+
+  const std::string& mode() const { return mode_; }
+  double minVisible() const { return minVisible_; }
+
+  FrameDetections of(const sim::SimFrame& f, const core::CameraIntrinsics& camera) {
+    return yolo_ ? detected(f, camera) : truthBoxes(f);
+  }
+
+  /// With yolox: the people at least half visible on the frames given, and how many of them a
+  /// detection was matched to.
+  size_t halfVisiblePeople = 0, halfVisibleFound = 0;
+
+ private:
+  FrameDetections truthBoxes(const sim::SimFrame& f) const {
+    FrameDetections out;
+    for (const auto& o : f.objects) {
+      if (o.visible_pixels == 0 || o.visible_fraction < minVisible_) continue;
+      core::Detection d;
+      // amodal: the simulator's box (the whole body, hidden parts too); visible: the box
+      // round the visible pixels, as a detector that sees only those might draw it.
+      d.box = mode_ == "visible" ? cv::boundingRect(f.image.label == o.id) : o.box;
+      d.category = o.category;
+      d.model = o.category == "car" ? core::MotionModel::Rigid : core::MotionModel::NonRigid;
+      d.truth_id = o.id;
+      out.detections.push_back(d);
+      out.truths.push_back(&o);
+    }
+    return out;
+  }
+
+  FrameDetections detected(const sim::SimFrame& f, const core::CameraIntrinsics& camera) {
+    core::Frame frame;
+    frame.index = f.index;
+    frame.rgb = f.image.rgb;
+    frame.depth = f.image.depth;
+    frame.intrinsics = camera;
+    FrameDetections out;
+    out.detections = yolo_->detect(frame);
+    out.truths.assign(out.detections.size(), nullptr);
+    std::vector<bench::TrueBox> truth;
+    std::vector<const sim::ObjectTruth*> objects;
+    for (const auto& o : f.objects)
+      if (o.visible_pixels > 0) truth.push_back({o.box, o.category}), objects.push_back(&o);
+    const std::vector<int> matched = bench::matchDetections(out.detections, truth);
+    for (size_t k = 0; k < matched.size(); ++k)
+      if (matched[k] >= 0) {
+        out.truths[k] = objects[size_t(matched[k])];
+        out.detections[k].truth_id = out.truths[k]->id;
+      }
+    for (const auto& o : f.objects)
+      if (o.category == "person" && o.visible_fraction >= 0.5) {
+        ++halfVisiblePeople;
+        halfVisibleFound += std::count(out.truths.begin(), out.truths.end(), &o);
+      }
+    return out;
+  }
+
+  std::string mode_;
+  double minVisible_;
+  std::unique_ptr<detection::Detector> yolo_;
+};
 
 /// Scores the masks of people (the issue's targets) and cars (printed apart) against the
 /// simulator's truth, frame by frame.
@@ -312,6 +375,7 @@ class MaskScorer {
                   const std::vector<double>* trackDepth) {
     const Eigen::Isometry3d T_camera_world = f.T_world_camera.inverse();
     for (size_t k = 0; k < masks.size(); ++k) {
+      if (!d.truths[k]) continue;  // a detection on no true object (--boxes yolox)
       const auto& o = *d.truths[k];
       if (o.category != "person" && o.category != "car") continue;
       score(index, f, d.detections, k, o, masks[k], T_camera_world,
@@ -377,7 +441,7 @@ class MaskScorer {
 
 void benchmark(const std::string& ini, const std::vector<std::string>& overrides,
                const segmentation::DepthThresholdSegmenter& segmenter, size_t every,
-               bool visibleBoxes, double minVisible, FailureDumper& dumper,
+               BoxSource& boxes, FailureDumper& dumper,
                const std::optional<core::IniConfig>& pipeline, std::ostream* cases) {
   sim::ScenarioOptions options;
   options.load(core::IniConfig::fromFile(ini, overrides));
@@ -392,7 +456,7 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   const size_t step = stages ? 1 : every;
   for (size_t i = 0; i < sequence->frameCount(); i += step) {
     sequence->renderFrame(i, f);
-    const FrameDetections d = detectionsOf(f, minVisible, visibleBoxes);
+    const FrameDetections d = boxes.of(f, sequence->camera());
     const auto t0 = std::chrono::steady_clock::now();
     const auto masks =
         stages ? stages->masks(f, d.detections, sequence->camera())
@@ -405,9 +469,20 @@ void benchmark(const std::string& ini, const std::vector<std::string>& overrides
   }
   std::printf("%s (%dx%d): %zu of %zu frames (every %zu), %s boxes of objects >= %.2f visible%s\n",
               ini.c_str(), sequence->camera().width, sequence->camera().height, s.ms.size(),
-              sequence->frameCount(), every, visibleBoxes ? "visible" : "amodal", minVisible,
+              sequence->frameCount(), every, boxes.mode().c_str(), boxes.minVisible(),
               stages ? ("; masks after " + stages->names() + " (--pipeline)").c_str() : "");
+  if (boxes.mode() == "yolox")
+    std::printf(
+        "YOLOX-nano (input 416) boxed %zu of %zu people at least 0.5 visible (IoU >= 0.5 "
+        "with the amodal box); only those are scored\n",
+        boxes.halfVisibleFound, boxes.halfVisiblePeople);
   printTable(s, stages.has_value());
+  std::vector<double> halfVisibleErr = s.depthErr[None];
+  halfVisibleErr.insert(halfVisibleErr.end(), s.depthErr[Mild].begin(), s.depthErr[Mild].end());
+  std::printf(
+      "  summary, people >= 50 %% visible: mean mask IoU %.3f (%zu), mean d_t error %.2f %% "
+      "(%zu)\n",
+      mean(s.iou), s.iou.size(), mean(halfVisibleErr), halfVisibleErr.size());
   if (scorer.cars.seen > 0) printCars(scorer.cars);
   std::printf("\n");
 }
@@ -443,8 +518,8 @@ SegmentationSetup segmentationSetup(const core::CommandLine& cl) {
 
 const char* const kUsage =
     R"(usage: bench-segmentation [--config params/sim/NAME.ini]... [--every N] [--set S.k=v]...
-                          [--seg-set Segmentation.key=value]... [--boxes amodal|visible]
-                          [--min-visible F] [--dump DIR] [--dump-max N]
+                          [--seg-set Segmentation.key=value]...
+                          [--boxes amodal|visible|yolox [--model FILE.onnx]] [--min-visible F] [--dump DIR] [--dump-max N]
                           [--pipeline INI | --seg-config INI] [--cases FILE.csv]
        bench-segmentation -h | --help
 
@@ -462,9 +537,12 @@ Options:
   --set S.k=v            override a scenario key (repeatable)
   --seg-set S.k=v        override a segmentation key, e.g. Segmentation.e_person=0.4
                          (repeatable; over the --pipeline or --seg-config ini)
-  --boxes amodal|visible
-                         the detections' boxes: the simulator's amodal box (default) or the
-                         box round the visible pixels
+  --boxes amodal|visible|yolox
+                         the detections' boxes: the simulator's amodal box (default), the
+                         box round the visible pixels, or YOLOX-nano's on the rendered colour
+                         (each scored against the true object it overlaps at IoU >= 0.5; the
+                         people it misses are counted, not scored)
+  --model FILE.onnx      YOLOX-nano for --boxes yolox (default ../shared/models/yolox_nano.onnx)
   --min-visible F        objects less visible than F get no box (default 0.2: the share below
                          which the system's GroundTruthDetector reports nothing)
   --dump DIR             write the worst masks as PNGs (green: right, red: not the person,
@@ -489,7 +567,7 @@ Exit codes: 0 done, 1 a bad scenario or ini, an output that cannot be written, 2
 int main(int argc, char** argv) {
   return core::runProgram("bench-segmentation", [&] {
     core::CommandLine cl({"--every", "--boxes", "--min-visible", "--dump", "--dump-max",
-                          "--pipeline", "--seg-config", "--cases"},
+                          "--pipeline", "--seg-config", "--cases", "--model"},
                          {}, {"--config", "--set", "--seg-set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
@@ -502,12 +580,10 @@ int main(int argc, char** argv) {
     const segmentation::DepthThresholdSegmenter segmenter(setup.params);
     const auto every =
         static_cast<size_t>(std::max(1LL, cl.optionalInteger("--every").value_or(3)));
-    const std::string boxes = cl.valueOr("--boxes", "amodal");
-    if (boxes != "amodal" && boxes != "visible")
-      throw core::UsageError("--boxes " + boxes + ": expected amodal or visible");
-    const double minVisible =
-        cl.optionalDouble("--min-visible")
-            .value_or(detection::GroundTruthDetectorSettings{}.min_visible_fraction);
+    BoxSource boxes(cl.valueOr("--boxes", "amodal"),
+                    cl.optionalDouble("--min-visible")
+                        .value_or(detection::GroundTruthDetectorSettings{}.min_visible_fraction),
+                    cl.valueOr("--model", "../shared/models/yolox_nano.onnx"));
     FailureDumper dumper(cl.valueOr("--dump", ""),
                          static_cast<size_t>(cl.optionalInteger("--dump-max").value_or(12)));
     std::ofstream cases;
@@ -518,8 +594,8 @@ int main(int argc, char** argv) {
                "nearest_other_depth,nearest_other_visible,nearest_other_detected,track_depth\n";
     }
     for (const auto& ini : inis)
-      benchmark(ini, cl.all("--set"), segmenter, every, boxes == "visible", minVisible, dumper,
-                setup.pipeline, cases.is_open() ? &cases : nullptr);
+      benchmark(ini, cl.all("--set"), segmenter, every, boxes, dumper, setup.pipeline,
+                cases.is_open() ? &cases : nullptr);
     dumper.write();
     return 0;
   });

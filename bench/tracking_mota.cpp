@@ -178,7 +178,6 @@ TrackerRun runTracker(const CachedRun& run, const tracking::KalmanBoxTrackerPara
   return r;
 }
 
-
 /// The tracker the bench starts from, before --set: the method's association (method.md section
 /// 2: rho_min 0.7, min_hits 3, no appearance, no gates) with reset_at_border, the tracker's
 /// defaults every bench-tracking figure up to 2026-11-28 was measured from. The shipped
@@ -187,8 +186,10 @@ constexpr const char* kBenchStart =
     "[Tracking]\nrho_min = 0.7\nmin_hits = 3\nreid_max_distance = 0\nreid_memory = 0\n"
     "alternative_depth = false\ndepth_gate = 0\ninnovation_gate = 0\nreset_at_border = true\n";
 
-tracking::KalmanBoxTrackerParams trackerParams(const std::vector<std::string>& overrides) {
-  auto ini = core::IniConfig::fromText(kBenchStart, "bench-tracking --set");
+tracking::KalmanBoxTrackerParams trackerParams(const BenchSettings& s,
+                                               const std::vector<std::string>& overrides) {
+  auto ini = s.system_ini.empty() ? core::IniConfig::fromText(kBenchStart, "bench-tracking --set")
+                                  : core::IniConfig::fromFile(s.system_ini, {});
   for (const auto& o : overrides) ini.applyOverride(o);
   tracking::TrackingStage stage;  // validates the keys and values as the pipeline would
   stage.configure(ini, "Tracking");
@@ -224,9 +225,8 @@ tracking::KalmanBoxTrackerParams sweptParams(const BenchSettings& s, const std::
                                              const std::string& v) {
   std::vector<std::string> overrides = s.tracker_overrides;
   overrides.push_back(key + "=" + v);
-  return trackerParams(overrides);
+  return trackerParams(s, overrides);
 }
-
 
 /// The input's lines: scenario, detections and their depth, the gaps in the truth a tracker has
 /// to bridge, and how far the truth moves between frames against rho_min.
@@ -235,12 +235,18 @@ void printInput(const BenchSettings& s, const CachedRun& run,
   const std::vector<double> depthError = depthErrors(run);
   std::printf("scenario        %s, %zu frames %dx%d, %zu people\n", s.config.c_str(),
               run.frames.size(), run.image.width, run.image.height, run.people);
+  char detector[160];
+  if (s.detector == "yolox")
+    std::snprintf(detector, sizeof detector, "YOLOX-nano (input 416, %s)", s.model.c_str());
+  else
+    std::snprintf(detector, sizeof detector,
+                  "GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported when >= %.2f "
+                  "visible",
+                  s.miss_rate, s.jitter, s.min_visible);
   std::printf(
-      "detections      GroundTruthDetector: miss rate %.2f, jitter %.1f px, reported "
-      "when >= %.2f visible; depth: %s (median error %.1f %%, %.1f %% of detections off by "
+      "detections      %s; depth: %s (median error %.1f %%, %.1f %% of detections off by "
       "more than 15 %%)\n",
-      s.miss_rate, s.jitter, s.min_visible, depthSource(s).c_str(),
-      100 * percentile(depthError, 0.5),
+      detector, depthSource(s).c_str(), 100 * percentile(depthError, 0.5),
       100.0 *
           double(std::count_if(depthError.begin(), depthError.end(),
                                [](double e) { return e > 0.15; })) /
@@ -305,7 +311,7 @@ void printSweep(const BenchSettings& s, const CachedRun& run) {
 }
 
 void benchSimulation(const BenchSettings& s) {
-  const tracking::KalmanBoxTrackerParams params = trackerParams(s.tracker_overrides);
+  const tracking::KalmanBoxTrackerParams params = trackerParams(s, s.tracker_overrides);
   const auto start = std::chrono::steady_clock::now();
   const CachedRun run = prepareSimulatedRun(s);
   const double prepSeconds =
@@ -321,7 +327,7 @@ void benchSimulation(const BenchSettings& s) {
 /// --scenarios / --seeds: the settings given and each sweep value over every run of the set.
 void benchSimulationSet(const BenchSettings& s, const std::vector<int>& scenarios,
                         const std::vector<int>& seeds, int jobs) {
-  std::vector<tracking::KalmanBoxTrackerParams> params = {trackerParams(s.tracker_overrides)};
+  std::vector<tracking::KalmanBoxTrackerParams> params = {trackerParams(s, s.tracker_overrides)};
   std::vector<std::string> names = {"as given"};
   for (const SweptValue& v : sweepValues(s)) {
     params.push_back(sweptParams(s, v.key, v.value));
@@ -346,6 +352,13 @@ BenchSettings parseSettings(const core::CommandLine& cl) {
   s.jitter = cl.optionalDouble("--jitter").value_or(s.jitter);
   s.min_visible = cl.optionalDouble("--min-visible").value_or(s.min_visible);
   s.seed = uint32_t(cl.optionalInteger("--seed").value_or(s.seed));
+  s.detector = cl.valueOr("--detector", s.detector);
+  if (s.detector != "truth" && s.detector != "yolox")
+    throw core::UsageError("--detector must be truth or yolox, not '" + s.detector + "'");
+  if (s.detector == "yolox" && (cl.has("--miss-rate") || cl.has("--jitter")))
+    throw core::UsageError("--miss-rate and --jitter shape the truth detector; not with yolox");
+  s.model = cl.valueOr("--model", s.model);
+  s.system_ini = cl.valueOr("--system", "");
   s.depth = cl.valueOr("--depth", s.depth);
   if (s.depth != "segmentation" && s.depth != "truth" && s.depth != "box")
     throw core::UsageError("--depth must be segmentation, truth or box, not '" + s.depth + "'");
@@ -378,7 +391,7 @@ void runVideo(const core::CommandLine& cl, const BenchSettings& s) {
   v.model = cl.required("--model");
   v.strip = cl.required("--strip");
   v.frames = size_t(cl.optionalInteger("--video-frames").value_or(0));
-  v.tracker = trackerParams(s.tracker_overrides);
+  v.tracker = trackerParams(s, s.tracker_overrides);
   benchVideo(v);
 }
 
@@ -402,8 +415,9 @@ void runSet(const core::CommandLine& cl, const BenchSettings& s) {
 
 const char* const kUsage =
     R"(usage: bench-tracking [--config FILE.ini] [--frames N] [--miss-rate P] [--jitter PX]
-                      [--min-visible F] [--seed N] [--depth segmentation|truth|box]
-                      [--true-depth-below V] [--report-coasting N]
+                      [--min-visible F] [--seed N] [--detector truth|yolox [--model FILE]]
+                      [--depth segmentation|truth|box] [--true-depth-below V] [--report-coasting N]
+                      [--system INI]
                       [--sweep "Tracking.key=v1,v2[;Tracking.key2=a,b]" | --sweep '']
                       [--set Section.key=value]... [--identities] [--trace FIRST-LAST]
        bench-tracking --scenarios A-B [--seeds A-B] [--jobs N] [options above]
@@ -413,7 +427,7 @@ const char* const kUsage =
 The Kalman depth-IoU tracker (method.md section 2) on a simulated scenario, scored with
 CLEAR-MOT and IDF1 (MOTA, MOTP, ID switches, fragmentations, IDF1/IDP/IDR), once with the
 ini's settings and once per swept value: detections from the ground-truth detector (with
-misses and jitter), object depth from the depth segmentation (or the truth). With --video, the
+misses and jitter) or from YOLOX-nano on the rendered colour, object depth from the depth segmentation (or the truth). With --video, the
 same tracker on a real video through YOLOX-nano. Run from the source tree (the default
 scenario is a relative path).
 
@@ -425,11 +439,16 @@ Options:
   --min-visible F        objects less visible than F are "don't care" truth and get no
                          detection (default 0.2)
   --seed N               the detector's seed (default 1)
+  --detector truth|yolox the ground-truth detector (default) or YOLOX-nano (--model) on the
+                         rendered colour (works on augment scenes: real frames, inserted people)
   --depth segmentation|truth|box
                          the object depth the tracker gets: the segmentation's (default),
                          the true depth, or the tracker's box-median fallback
   --true-depth-below V   with --depth segmentation: a person less than V visible gets the true
                          depth instead (default 0: off)
+  --system INI           start from INI's [Tracking] and [Segmentation] (unset keys: the
+                         shipped defaults) instead of the method-like start the figures in
+                         docs/benchmarks.md use; --set then overrides
   --report-coasting N    report a confirmed track coasting for at most N detector frames
                          (default 1, as DeepSORT)
   --sweep TEXT           tracker keys swept one at a time, "Tracking.key=v1,v2;..." (default
@@ -445,7 +464,8 @@ Options:
   --seeds A-B            the detector seeds of a set (default: --seed's)
   --jobs N               runs of a set at once (default: one per core)
   --video FILE           the tracker on a real video instead (needs --model and --strip)
-  --model FILE.onnx      YOLOX-nano for --video
+  --model FILE.onnx      YOLOX-nano for --video and --detector yolox (default
+                         ../shared/models/yolox_nano.onnx with --detector yolox)
   --strip FILE.png       write four annotated frames of the video side by side
   --video-frames N       frames of the video (default: all)
   -h, --help             print this text and exit
@@ -457,11 +477,17 @@ Exit codes: 0 done, 1 a bad scenario, model or video, 2 usage.
 
 int main(int argc, char** argv) {
   return core::runProgram("bench-tracking", [&] {
-    core::CommandLine cl(
-        {"--config", "--frames", "--miss-rate", "--jitter", "--min-visible", "--seed", "--depth",
-         "--report-coasting", "--video", "--model", "--strip", "--video-frames", "--sweep",
-         "--trace", "--scenarios", "--seeds", "--jobs", "--true-depth-below"},
-        {"--identities"}, {"--set"});
+    core::CommandLine cl({"--config",      "--frames",
+                          "--miss-rate",   "--jitter",
+                          "--min-visible", "--seed",
+                          "--depth",       "--report-coasting",
+                          "--video",       "--model",
+                          "--strip",       "--video-frames",
+                          "--sweep",       "--trace",
+                          "--scenarios",   "--seeds",
+                          "--jobs",        "--true-depth-below",
+                          "--detector",    "--system"},
+                         {"--identities"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
       std::cout << kUsage;

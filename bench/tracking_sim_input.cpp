@@ -1,12 +1,15 @@
 #include "tracking_sim_input.h"
 
+#include "detection_accuracy.h"
+
 #include <dynslam/core/Config.h>
 #include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/detection/GroundTruthDetector.h>
+#include <dynslam/detection/OnnxYoloDetector.h>
 #include <dynslam/segmentation/DepthThresholdSegmenter.h>
 #include <dynslam/segmentation/MaskQuality.h>
 #include <dynslam/segmentation/SegmentationStage.h>
-#include <dynslam/sim/Simulator.h>
+#include <dynslam/sim/MakeSequence.h>
 #include <dynslam/tracking/Appearance.h>
 #include <dynslam/tracking/DepthIoU.h>
 
@@ -16,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 
 namespace dynslam::bench {
 
@@ -38,7 +42,7 @@ double trueDepth(const sim::SimFrame& f, const sim::ObjectTruth& o) {
 }
 
 /// objects.txt as dynslam-sim writes it (SimulationWriter), with t in seconds from the start.
-std::string writeObjects(const sim::Simulator& simulator, size_t frames, const std::string& dir) {
+std::string writeObjects(const sim::Sequence& simulator, size_t frames, const std::string& dir) {
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/objects.txt";
   std::ofstream out(path);
@@ -62,7 +66,8 @@ std::string runFolder() {
 
 /// The segmentation exactly as the pipeline's Segmentation stage reads it from --set.
 segmentation::DepthThresholdParams segmentationParams(const BenchSettings& s) {
-  auto segIni = core::IniConfig::fromText("", "bench-tracking --set");
+  auto segIni = s.system_ini.empty() ? core::IniConfig::fromText("", "bench-tracking --set")
+                                     : core::IniConfig::fromFile(s.system_ini, {});
   for (const auto& o : s.segmentation_overrides) segIni.applyOverride(o);
   segmentation::SegmentationStage segStage;
   segStage.configure(segIni, "Segmentation");
@@ -147,39 +152,64 @@ void addAppearanceAt(CachedFrame& c, const core::Frame& frame) {
     }
 }
 
+/// Each detection of `frame` of a true object gets its id: the one its box overlaps at IoU >= 0.5
+/// among the visible objects of its category (YOLOX-nano knows no truth).
+void assignTruth(core::Frame& frame, const sim::SimFrame& sf) {
+  std::vector<bench::TrueBox> truth;
+  std::vector<uint16_t> ids;
+  for (const auto& o : sf.objects)
+    if (o.visible_pixels > 0) truth.push_back({o.box, o.category}), ids.push_back(o.id);
+  const std::vector<int> matched = bench::matchDetections(frame.detections, truth);
+  for (size_t k = 0; k < matched.size(); ++k)
+    if (matched[k] >= 0) frame.detections[k].truth_id = ids[size_t(matched[k])];
+}
+
+/// The detector --detector names.
+std::unique_ptr<detection::Detector> makeDetector(const BenchSettings& s,
+                                                  const sim::Sequence& sequence, size_t frames,
+                                                  const std::string& dir) {
+  if (s.detector == "yolox") {
+    detection::OnnxYoloDetectorSettings yolo;
+    yolo.model = s.model;
+    return std::make_unique<detection::OnnxYoloDetector>(yolo, detection::ClassMap());
+  }
+  detection::GroundTruthDetectorSettings gt;
+  gt.objects = writeObjects(sequence, frames, dir);
+  gt.miss_rate = s.miss_rate;
+  gt.jitter_px = s.jitter;
+  gt.min_visible_fraction = s.min_visible;
+  gt.seed = s.seed;
+  return std::make_unique<detection::GroundTruthDetector>(gt, detection::ClassMap());
+}
+
 }  // namespace
 
 CachedRun prepareSimulatedRun(const BenchSettings& s) {
   sim::ScenarioOptions options;
   options.load(core::IniConfig::fromFile(s.config, s.sim_overrides));
-  const sim::Simulator simulator(options);
+  const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
   const size_t frames =
-      s.frames ? std::min(s.frames, simulator.frameCount()) : simulator.frameCount();
+      s.frames ? std::min(s.frames, sequence->frameCount()) : sequence->frameCount();
   const std::string dir = runFolder();
-  detection::GroundTruthDetectorSettings gt;
-  gt.objects = writeObjects(simulator, frames, dir);
-  gt.miss_rate = s.miss_rate;
-  gt.jitter_px = s.jitter;
-  gt.min_visible_fraction = s.min_visible;
-  gt.seed = s.seed;
-  detection::GroundTruthDetector detector(gt, detection::ClassMap());
+  const std::unique_ptr<detection::Detector> detector = makeDetector(s, *sequence, frames, dir);
   const segmentation::DepthThresholdSegmenter segmenter(segmentationParams(s));
 
   CachedRun run;
-  run.image = cv::Size(options.world.width, options.world.height);
+  run.image = cv::Size(sequence->camera().width, sequence->camera().height);
   run.people = size_t(options.people.walkers + options.people.standing);
   sim::SimFrame sf;
   std::map<int, std::pair<cv::Rect2f, double>> previous;  // truth id -> box, depth
   for (size_t i = 0; i < frames; ++i) {
-    simulator.renderFrame(i, sf);
+    sequence->renderFrame(i, sf);
     noteSelfRho(sf, s.min_visible, previous, run.selfRho);
     core::Frame frame;
     frame.index = i;
     frame.t = sf.t;
     frame.rgb = sf.image.rgb;
     frame.depth = sf.image.depth;
-    frame.intrinsics = simulator.camera();
-    frame.detections = detector.detect(frame);
+    frame.intrinsics = sequence->camera();
+    frame.detections = detector->detect(frame);
+    if (s.detector == "yolox") assignTruth(frame, sf);
     addObjectMasks(frame, sf, s, segmenter);
     CachedFrame c;
     c.t = frame.t;

@@ -1,6 +1,6 @@
 // dynslam: plays a rawlog through the stages an ini file configures and writes the trajectory.
 #include "runner/LiveView.h"
-#include "runner/RunConfiguration.h"
+#include <dynslam/system/RunConfiguration.h>
 #include "runner/Runner.h"
 
 #include <dynslam/core/CommandLine.h>
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (cl.has("--print-config")) {
-      dynslam::runner::printEffectiveConfig(cl.required("--config"), cl.all("--set"), std::cout);
+      dynslam::system::printEffectiveConfig(cl.required("--config"), cl.all("--set"), std::cout);
       return 0;
     }
     dynslam::runner::RunnerArgs args;

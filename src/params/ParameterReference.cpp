@@ -1,6 +1,6 @@
 #include "params/ParameterReference.h"
 
-#include "runner/BuiltinStages.h"
+#include <dynslam/system/BuiltinStages.h>
 
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Pipeline.h>
@@ -202,7 +202,7 @@ void addVariantKeys(const core::StageRegistry& registry, const std::string& clas
 std::vector<SectionDoc> collectParameters() {
   std::vector<SectionDoc> out;
   core::StageRegistry registry;
-  runner::registerBuiltinStages(registry);
+  system::registerBuiltinStages(registry);
 
   std::string classes;
   for (const auto& c : registry.classNames()) classes += (classes.empty() ? "`" : ", `") + c + "`";

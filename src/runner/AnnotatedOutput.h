@@ -3,6 +3,7 @@
 // DIR/NNNNNN.png and, one after the other, as the video DIR/annotated.avi (Motion-JPEG, which
 // OpenCV writes itself: no FFmpeg needed, and VLC, mpv and ffplay play it).
 #include <dynslam/core/Frame.h>
+#include <dynslam/system/FrameSink.h>
 
 #include <memory>
 #include <string>
@@ -13,7 +14,7 @@ class VideoWriter;
 
 namespace dynslam::runner {
 
-class AnnotatedOutput {
+class AnnotatedOutput : public system::FrameSink {
  public:
   static constexpr const char* kVideoName = "annotated.avi";
 
@@ -25,6 +26,8 @@ class AnnotatedOutput {
   void write(const core::Frame& frame);
   /// Writes a frame held back for the video's rate (a one-frame run) and closes the video.
   void finish();
+  void onFrame(const core::Frame& frame, const system::FrameContext&) override { write(frame); }
+  void onEnd() override { finish(); }
 
  private:
   void openVideo(double fps);

@@ -19,8 +19,8 @@ void KeyframeLog::append(const core::Frame& frame) {
   const core::KeyframeRecord& k = *frame.keyframe;
   out_ << frame.index << ',' << std::fixed << std::setprecision(6) << frame.t << ',' << k.reason
        << ',' << k.static_features << ',' << k.shared_features << ',' << k.nonrigid_features << ','
-       << k.rigid_objects << ',' << std::setprecision(3) << k.solve_ms << ',' << k.iterations
-       << ',' << int(k.restarted) << ',' << int(k.visual_inertial) << std::setprecision(6);
+       << k.rigid_objects << ',' << std::setprecision(3) << k.solve_ms << ',' << k.iterations << ','
+       << int(k.restarted) << ',' << int(k.visual_inertial) << std::setprecision(6);
   for (const auto* v : {&k.velocity, &k.acc_bias, &k.gyro_bias})
     out_ << ',' << (*v)(0) << ',' << (*v)(1) << ',' << (*v)(2);
   out_ << '\n';

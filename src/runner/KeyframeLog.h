@@ -5,6 +5,8 @@
 //   frame,t_s,reason,static_features,shared_features,nonrigid_features,rigid_objects,solve_ms,
 //   iterations,restarted,visual_inertial,vx,vy,vz,acc_bias_x,acc_bias_y,acc_bias_z,
 //   gyro_bias_x,gyro_bias_y,gyro_bias_z
+#include <dynslam/system/FrameSink.h>
+
 #include <fstream>
 #include <string>
 
@@ -14,7 +16,7 @@ struct Frame;
 
 namespace dynslam::runner {
 
-class KeyframeLog {
+class KeyframeLog : public system::FrameSink {
  public:
   /// Creates (truncates) `path` with the header. Throws std::runtime_error naming the file when
   /// it cannot be written.
@@ -22,6 +24,7 @@ class KeyframeLog {
 
   /// One row when the frame is a keyframe, nothing otherwise.
   void append(const core::Frame& frame);
+  void onFrame(const core::Frame& frame, const system::FrameContext&) override { append(frame); }
 
  private:
   std::string path_;

@@ -2,7 +2,7 @@
 
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Pipeline.h>
-#include <dynslam/io/FrameReader.h>
+#include <dynslam/io/SensorSync.h>
 
 #include <sys/resource.h>
 
@@ -52,8 +52,7 @@ void writeRealtime(core::JsonWriter& j, const RunRecord& rec) {
   j.endObject();
 }
 
-void writeObservations(core::JsonWriter& j, const io::FrameReader& reader) {
-  const io::SyncCounts c = reader.counts();
+void writeObservations(core::JsonWriter& j, const io::SyncCounts& c) {
   j.key("observations").beginObject();
   j.member("total", c.observations).member("rgbd", c.rgbd).member("imu", c.imu);
   j.member("gnss", c.gnss).member("gnss_dropped", c.gnss_dropped).member("other", c.other);
@@ -92,7 +91,7 @@ double processCpuSeconds() {
 }
 
 void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
-                  const io::FrameReader* reader, const core::Pipeline* pipeline) {
+                  const io::SyncCounts* counts, const core::Pipeline* pipeline) {
   std::ofstream out(path);
   core::JsonWriter j(out);
   j.beginObject();
@@ -116,7 +115,7 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
     j.member("ape_error", rec.ape_error);
   if (args.map) j.member("map_points", rec.map_points);
   if (args.realtime) writeRealtime(j, rec);
-  if (reader) writeObservations(j, *reader);
+  if (counts) writeObservations(j, *counts);
   writeStages(j, pipeline);
   j.endObject();
 }

@@ -14,7 +14,7 @@ namespace dynslam::core {
 class Pipeline;
 }
 namespace dynslam::io {
-class FrameReader;
+struct SyncCounts;
 }
 
 namespace dynslam::runner {
@@ -31,8 +31,8 @@ struct RunRecord {
   double wall_s = 0.0;
   double cpu_s = 0.0;  ///< user + system time of every thread over the run
   bool estimator = false;
-  std::vector<double> lag_ms;  ///< --realtime: how late each frame reached the pipeline
-  std::vector<double> dt_ms;   ///< --realtime: stamp differences between frames
+  std::vector<double> lag_ms;   ///< --realtime: how late each frame reached the pipeline
+  std::vector<double> dt_ms;    ///< --realtime: stamp differences between frames
   std::optional<ApeScore> ape;  ///< --gt
   std::string ape_error;        ///< --gt given but no score (nothing estimated, nothing associated)
   size_t map_points = 0;        ///< points in map.3Dscene's static map
@@ -44,8 +44,9 @@ struct RunRecord {
 /// The median (0 for none); of an even count, the mean of the two middle values.
 double median(std::vector<double> v);
 
-/// Writes summary.json; `reader` and `pipeline` may be null (the run failed before them).
+/// Writes summary.json; `counts` (the observations read) and `pipeline` may be null (the run
+/// failed before them).
 void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
-                  const io::FrameReader* reader, const core::Pipeline* pipeline);
+                  const io::SyncCounts* counts, const core::Pipeline* pipeline);
 
 }  // namespace dynslam::runner

@@ -5,16 +5,18 @@
 #include "GroundTruthScore.h"
 #include "KeyframeLog.h"
 #include "LiveView.h"
-#include "RunConfiguration.h"
 #include "RunSummary.h"
 #include "TimingLog.h"
+#include "TrajectoryFiles.h"
 
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/core/TrajectoryFile.h>
-#include <dynslam/io/FrameReader.h>
+#include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
-#include <dynslam/io/TrajectoryWriter.h>
+#include <dynslam/system/System.h>
 #include <dynslam/viz/MapScene.h>
+
+#include <mrpt/obs/CObservation.h>
 
 #include <unistd.h>
 #include <algorithm>
@@ -27,7 +29,6 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <set>
 #include <thread>
 
 namespace fs = std::filesystem;
@@ -62,21 +63,6 @@ class CameraRateClock {
   double first_ = 0, last_ = 0;
   std::chrono::steady_clock::time_point start_;
 };
-
-/// Appends one line to OUT/objects/<id>.tum, creating (truncating) the file the first time this
-/// run writes it. Opened and closed per line: a long run follows thousands of objects, and one
-/// open stream each would hold a buffer and a file descriptor per object for the whole run
-/// (the 10,000-frame soak grew by 5 MB with 525 of them open).
-void appendObjectPose(const std::string& out, int id, const core::StampedPose& pose,
-                      std::set<int>& created) {
-  const fs::path dir = fs::path(out) / "objects";
-  const bool first = created.insert(id).second;
-  if (first) fs::create_directories(dir);
-  const std::string path = (dir / (std::to_string(id) + ".tum")).string();
-  std::ofstream file(path, first ? std::ios::trunc : std::ios::app);
-  core::appendTumLine(file, pose);
-  if (!file) throw std::runtime_error("cannot write the object trajectory '" + path + "'");
-}
 
 /// --gt: the APE of what trajectory.tum holds (read back, as evo would read it).
 void scoreRun(const RunnerArgs& args, const core::Trajectory& ground_truth, size_t poses,
@@ -128,7 +114,16 @@ class DynslamRun {
     } catch (const std::exception& e) {
       recordFailure(e);
     }
-    rec_.poses = trajectory_ ? trajectory_->count() : 0;
+    if (system_) {
+      try {
+        system_->drain();  // after an error: what was made before it, then the sinks' ends
+      } catch (const std::exception& e) {
+        std::cerr << "dynslam: error: " << e.what() << "\n";
+        rec_.failIfOk(e.what());
+      }
+    }
+    rec_.poses = trajectory_ ? trajectory_->trajectory().count() : 0;
+    rec_.objects = trajectory_ ? trajectory_->objects() : 0;
     rec_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     rec_.cpu_s = processCpuSeconds() - startCpu_;
     finishOutputs();
@@ -140,81 +135,103 @@ class DynslamRun {
   std::string outPath(const char* name) const { return (fs::path(args_.out) / name).string(); }
 
   void openOutputs() {
-    trajectory_.emplace(outPath("trajectory.tum"));
     if (!args_.ground_truth.empty()) groundTruth_ = readGroundTruth(args_.ground_truth);
-    if (!args_.frames_dir.empty()) annotated_.emplace(args_.frames_dir, args_.frames_video);
-    if (args_.map || args_.gui) {
-      viz::MapSceneOptions mapOptions;
-      mapOptions.every_n_frames = args_.map_every_n_frames;
-      mapOptions.voxel_size = args_.map_voxel_size;
-      map_.emplace(mapOptions);
-    }
   }
 
+  /// System from the ini, and every output of the run as one of its sinks.
   void configure() {
-    auto configured = configureRun(core::IniConfig::fromFile(args_.config, args_.overrides));
-    pipeline_.emplace(std::move(configured.pipeline));
-    const io::SensorSyncOptions syncOptions = configured.sync;
-    timing_.emplace(outPath("timing.csv"), *pipeline_);
-    rec_.estimator = pipeline_->estimatesPose();
-    if (rec_.estimator) keyframeLog_.emplace(outPath("keyframes.csv"));
+    system::SystemSettings settings;
+    settings.map = args_.map || args_.gui;  // the live view shows the map without saving it
+    settings.map_every_n_frames = args_.map_every_n_frames;
+    settings.map_voxel_size = args_.map_voxel_size;
+    settings.max_frames = args_.max_frames;
+    if (args_.realtime)
+      settings.before_frame = [this](core::Frame& f) { cameraRate_.waitFor(f.t, rec_); };
+    system_.emplace(args_.config, args_.overrides, settings);
+    rec_.estimator = system_->estimatesPose();
     if (!rec_.estimator)
       std::cerr << "dynslam: no pose estimator in [pipeline] stages of " << args_.config
                 << ": frames are read and processed, but trajectory.tum stays empty\n";
-    reader_.emplace(args_.rawlog, syncOptions);
+    trajectory_ = std::make_shared<TrajectoryFiles>(args_.out);
+    system_->addSink(trajectory_);
+    system_->addSink(std::make_shared<TimingLog>(outPath("timing.csv"), system_->pipeline()));
+    if (rec_.estimator) system_->addSink(std::make_shared<KeyframeLog>(outPath("keyframes.csv")));
+    if (!args_.frames_dir.empty())
+      system_->addSink(std::make_shared<AnnotatedOutput>(args_.frames_dir, args_.frames_video));
     if (args_.gui) {
       LiveViewOptions liveOptions;
       liveOptions.max_rate_hz = args_.gui_max_rate_hz;
-      live_.emplace(liveOptions);
+      live_ = std::make_shared<LiveViewSink>(liveOptions, *system_->map());
+      system_->addSink(live_);
     }
+    system_->addSink(std::make_shared<RecordSink>(*this));
+    source_.emplace(args_.rawlog);
   }
 
+  /// The rawlog's observations into System, one by one, until the end, --max-frames or Ctrl-C.
   void playFrames() {
     progress_.emplace(stderr, !args_.quiet && isatty(STDERR_FILENO) != 0);
     std::signal(SIGINT, onInterrupt);
-    CameraRateClock cameraRate;
-    while (!g_interrupted) {
-      if (args_.max_frames >= 0 && static_cast<long>(rec_.frames) >= args_.max_frames) break;
-      std::optional<core::Frame> next = reader_->next();
-      if (!next) break;
-      core::Frame& frame = *next;
-      if (args_.realtime) cameraRate.waitFor(frame.t, rec_);
-      const auto processStart = std::chrono::steady_clock::now();
-      pipeline_->process(frame);
-      timing_->append(
-          frame.index, frame.t, *pipeline_,
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - processStart)
-              .count());
-      writeFrame(frame);
-      if (!args_.quiet) progress_->update(rec_.frames, reader_->progress());
+    const auto enough = [&] {
+      return args_.max_frames >= 0 && long(system_->framesProcessed()) >= args_.max_frames;
+    };
+    while (!g_interrupted && !enough()) {
+      std::shared_ptr<mrpt::obs::CObservation> observation;
+      try {
+        observation = source_->next();
+        // Externally stored images decoded here, on the reading thread, not on System's:
+        // decoding on the pipeline's thread took about 30 % of a run.
+        if (observation) observation->load();
+      } catch (...) {
+        system_->drain();  // the frames read before the damage, as a run that stopped there
+        throw;
+      }
+      if (!observation) break;
+      readFraction_ = source_->progress();
+      system_->onNewObservation(observation);
     }
+    if (g_interrupted)
+      system_->stop();
+    else
+      system_->flush();
   }
 
-  /// Everything one processed frame adds to the outputs and to the record.
-  void writeFrame(const core::Frame& frame) {
-    if (keyframeLog_) keyframeLog_->append(frame);
-    if (annotated_) annotated_->write(frame);
-    if (map_) map_->addFrame(frame);
-    if (live_) {
-      live_->update(frame, *map_);
-      lastFrame_ = frame;
+  /// Counts and progress, as each frame leaves the pipeline (on System's thread).
+  class RecordSink : public system::FrameSink {
+   public:
+    explicit RecordSink(DynslamRun& run) : run_(run) {}
+    void onFrame(const core::Frame& frame, const system::FrameContext&) override {
+      RunRecord& rec = run_.rec_;
+      ++rec.frames;
+      rec.imu_samples += frame.imu.size();
+      rec.gnss_fixes += frame.gnss.size();
+      if (!run_.args_.quiet) run_.progress_->update(rec.frames, run_.readFraction_.load());
     }
-    ++rec_.frames;
-    rec_.imu_samples += frame.imu.size();
-    rec_.gnss_fixes += frame.gnss.size();
-    if (frame.T_world_camera) {
-      trajectory_->append({frame.t, *frame.T_world_camera});
-      ++rec_.poses;
+
+   private:
+    DynslamRun& run_;
+  };
+
+  /// --gui: the window, redrawn with each frame and once more at the end.
+  class LiveViewSink : public system::FrameSink {
+   public:
+    LiveViewSink(const LiveViewOptions& options, const viz::MapSceneBuilder& map)
+        : view(options), map_(map) {}
+    void onFrame(const core::Frame& frame, const system::FrameContext&) override {
+      view.update(frame, map_);
+      last_ = frame;
     }
-    for (const auto& object : frame.object_poses)
-      appendObjectPose(args_.out, object.object_id, {frame.t, object.T_world_object}, objectFiles_);
-    rec_.objects = objectFiles_.size();
-  }
+    void onEnd() override {
+      if (last_) view.update(*last_, map_, true);
+    }
+    LiveView view;
+
+   private:
+    const viz::MapSceneBuilder& map_;
+    std::optional<core::Frame> last_;
+  };
 
   void finishPlayback() {
-    pipeline_->finish();
-    if (annotated_) annotated_->finish();
-    if (live_ && lastFrame_) live_->update(*lastFrame_, *map_, true);
     if (g_interrupted) {
       rec_.status = "interrupted";
       std::cerr << "\ndynslam: interrupted; outputs hold the first " << rec_.frames << " frames\n";
@@ -227,8 +244,8 @@ class DynslamRun {
     rec_.error = e.what();
     std::cerr << "\ndynslam: error: " << e.what() << "\n";
     if (trajectory_)
-      std::cerr << "dynslam: " << trajectory_->path() << " holds the " << trajectory_->count()
-                << " poses estimated before the error\n";
+      std::cerr << "dynslam: " << trajectory_->trajectory().path() << " holds the "
+                << trajectory_->trajectory().count() << " poses estimated before the error\n";
   }
 
   /// What is written once the frames are done, also after an error or Ctrl-C (like
@@ -237,22 +254,25 @@ class DynslamRun {
   void finishOutputs() {
     if (live_ && !args_.gui_screenshot.empty()) {
       try {
-        const std::string source = live_->saveScreenshot(args_.gui_screenshot);
+        const std::string source = live_->view.saveScreenshot(args_.gui_screenshot);
         std::cerr << "dynslam: wrote " << args_.gui_screenshot << " (" << source << " image, "
-                  << live_->updates() << " window updates)\n";
+                  << live_->view.updates() << " window updates)\n";
       } catch (const std::exception& e) {
         std::cerr << "dynslam: error: " << e.what() << "\n";
         rec_.failIfOk(e.what());
       }
     }
     if (live_)
-      std::cerr << "dynslam: --gui: " << live_->updates() << " window updates, "
-                << (live_->updates() ? 1000.0 * live_->updateSeconds() / live_->updates() : 0.0)
+      std::cerr << "dynslam: --gui: " << live_->view.updates() << " window updates, "
+                << (live_->view.updates()
+                        ? 1000.0 * live_->view.updateSeconds() / live_->view.updates()
+                        : 0.0)
                 << " ms each on the run's thread\n";
-    if (map_ && args_.map) {
+    const viz::MapSceneBuilder* map = system_ ? system_->map() : nullptr;
+    if (map && args_.map) {
       try {
-        map_->save(outPath("map.3Dscene"));
-        rec_.map_points = map_->pointCount();
+        map->save(outPath("map.3Dscene"));
+        rec_.map_points = map->pointCount();
       } catch (const std::exception& e) {
         std::cerr << "dynslam: error: " << e.what() << "\n";
         rec_.failIfOk(e.what());
@@ -265,8 +285,10 @@ class DynslamRun {
     if (!args_.ground_truth.empty() && !groundTruth_.empty())
       scoreRun(args_, groundTruth_, rec_.poses, rec_);
     const std::string summaryPath = outPath("summary.json");
-    writeSummary(summaryPath, args_, rec_, reader_ ? &*reader_ : nullptr,
-                 pipeline_ ? &*pipeline_ : nullptr);
+    const std::optional<io::SyncCounts> counts =
+        system_ ? std::optional<io::SyncCounts>(system_->counts()) : std::nullopt;
+    writeSummary(summaryPath, args_, rec_, counts ? &*counts : nullptr,
+                 system_ ? &system_->pipeline() : nullptr);
     std::cerr << "dynslam: wrote " << summaryPath << "\n";
     std::printf("dynslam: %zu frames, %zu poses in %.1f s (%.1f FPS)\n", rec_.frames, rec_.poses,
                 rec_.wall_s, rec_.wall_s > 0 ? rec_.frames / rec_.wall_s : 0.0);
@@ -287,8 +309,6 @@ class DynslamRun {
       // linked list corrupted", exit 134 / 139, summary.json never written). Every output is
       // closed first; the process then ends without running the GUI's destructors.
       trajectory_.reset();
-      timing_.reset();
-      keyframeLog_.reset();
       std::fflush(nullptr);
       std::_Exit(code);
     }
@@ -300,17 +320,14 @@ class DynslamRun {
   const double startCpu_ = processCpuSeconds();
   RunRecord rec_;
   core::Trajectory groundTruth_;
-  std::optional<core::Pipeline> pipeline_;
-  std::optional<io::FrameReader> reader_;
+  CameraRateClock cameraRate_;           // --realtime, on System's thread
+  std::atomic<double> readFraction_{0};  // of the rawlog, for the progress line
   std::optional<core::ProgressReporter> progress_;
-  std::optional<io::TumTrajectoryWriter> trajectory_;
-  std::set<int> objectFiles_;  // ids whose objects/<id>.tum this run has created
-  std::optional<AnnotatedOutput> annotated_;
-  std::optional<TimingLog> timing_;
-  std::optional<KeyframeLog> keyframeLog_;   // with a pose estimator
-  std::optional<viz::MapSceneBuilder> map_;  // also built for --gui, saved only with args.map
-  std::optional<LiveView> live_;
-  std::optional<core::Frame> lastFrame_;  // --gui: the last frame, shown once more at the end
+  std::shared_ptr<TrajectoryFiles> trajectory_;
+  std::shared_ptr<LiveViewSink> live_;  // --gui
+  // Declared after the sinks it holds and before the rawlog: destroyed first of the two.
+  std::optional<system::System> system_;
+  std::optional<io::RawlogSource> source_;
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
-// The rawlog playback loop of the `dynslam` program: rawlog -> SensorSync -> Pipeline, with the
-// trajectory written pose by pose and a summary written whatever happens.
+// The rawlog playback of the `dynslam` program: the rawlog's observations fed one by one into
+// system::System, the output files as its sinks (trajectory written pose by pose), and a summary
+// written whatever happens.
 #include <string>
 #include <vector>
 

@@ -1,5 +1,6 @@
 #include "TimingLog.h"
 
+#include <dynslam/core/Frame.h>
 #include <dynslam/core/Pipeline.h>
 
 #include <iomanip>
@@ -24,6 +25,10 @@ void TimingLog::append(std::size_t frame, double t, const core::Pipeline& pipeli
   // Flushed now and then rather than per row: a crash loses at most a few rows of timing.
   if (frame % 100 == 0) out_.flush();
   if (!out_) throw std::runtime_error("cannot write the timing log '" + path_ + "'");
+}
+
+void TimingLog::onFrame(const core::Frame& frame, const system::FrameContext& context) {
+  append(frame.index, frame.t, context.pipeline, context.process_ms);
 }
 
 }  // namespace dynslam::runner

@@ -42,6 +42,17 @@ IniConfig IniConfig::fromText(const std::string& text, const std::string& source
   return IniConfig(std::make_shared<mrpt::config::CConfigFileMemory>(text), source);
 }
 
+IniConfig IniConfig::fromMrpt(const mrpt::config::CConfigFileBase& ini, const std::string& source) {
+  auto mem = std::make_shared<mrpt::config::CConfigFileMemory>();
+  std::vector<std::string> sections, keys;
+  ini.getAllSections(sections);
+  for (const auto& section : sections) {
+    ini.getAllKeys(section, keys);
+    for (const auto& key : keys) mem->write(section, key, ini.read_string(section, key, ""));
+  }
+  return IniConfig(std::move(mem), source);
+}
+
 void IniConfig::applyOverride(const std::string& assignment) {
   const auto eq = assignment.find('=');
   const auto dot = assignment.find('.');

@@ -82,10 +82,13 @@ SpriteDraw compositeSprite(const SpriteFrame& sprite, const SpritePlacement& pla
   SpriteDraw draw;
   SpritePlane plane;
   if (!planeOf(sprite, placement, T_world_camera, plane)) return draw;
-  draw.box = imageBox(sprite, plane, K);
+  // The crop's box holds the silhouette and the crop's empty corners (a walker's crop is as wide
+  // as the stride); the amodal box is the silhouette's own.
+  const cv::Rect crop = imageBox(sprite, plane, K);
+  cv::Point lo(K.width, K.height), hi(-1, -1);
   const double halfWidth = placement.body_width_m / 2, halfDepth = placement.body_depth_m / 2;
-  for (int y = draw.box.y; y < draw.box.br().y; ++y)
-    for (int x = draw.box.x; x < draw.box.br().x; ++x) {
+  for (int y = crop.y; y < crop.br().y; ++y)
+    for (int x = crop.x; x < crop.br().x; ++x) {
       // The pixel's ray meets the plane at P; (l, h) are P's coordinates on it.
       const Eigen::Vector3d ray((x - K.cx) / K.fx, (y - K.cy) / K.fy, 1.0);
       const double s = plane.toward.dot(plane.foot) / plane.toward.dot(ray);
@@ -98,6 +101,8 @@ SpriteDraw compositeSprite(const SpriteFrame& sprite, const SpritePlacement& pla
       const cv::Vec4b texel = bilinear(sprite.bgra, u, v);
       if (texel[3] < 128) continue;
       ++draw.pixels;
+      lo = cv::Point(std::min(lo.x, x), std::min(lo.y, y));
+      hi = cv::Point(std::max(hi.x, x), std::max(hi.y, y));
       // The front of the elliptical cross-section round the plane's axis (arms beyond the
       // body's width lie on the plane).
       const double across = std::min(1.0, std::abs(l) / halfWidth);
@@ -109,6 +114,7 @@ SpriteDraw compositeSprite(const SpriteFrame& sprite, const SpritePlacement& pla
       frame.label.at<uint16_t>(y, x) = label;
       ++draw.visible;
     }
+  if (draw.pixels > 0) draw.box = cv::Rect(lo, hi + cv::Point(1, 1));
   return draw;
 }
 

@@ -61,7 +61,7 @@ TEST(SpriteCompositor, APersonStandsAtItsTrueSizeWithABodysDepth) {
   EXPECT_NEAR(drawn.x + drawn.width / 2.0, 320, 2);
   EXPECT_EQ(draw.visible, draw.pixels);
   EXPECT_EQ(draw.visible, cv::countNonZero(frame.label == 7));
-  EXPECT_TRUE((draw.box & drawn) == drawn) << "the amodal box holds every pixel drawn";
+  EXPECT_EQ(draw.box, drawn) << "the amodal box is the silhouette's, not the wider crop's";
   const int row = drawn.y + drawn.height / 2, mid = drawn.x + drawn.width / 2;
   EXPECT_NEAR(frame.depth.at<float>(row, mid), 3.0 - 0.125, 0.01) << "the body's front, centre";
   EXPECT_NEAR(frame.depth.at<float>(row, drawn.x), 3.0, 0.04) << "its edge: back at the axis";
@@ -75,6 +75,8 @@ TEST(SpriteCompositor, NearerSurfacesHideItAndMissingDepthDoesNot) {
   frame.depth(cv::Rect(320, 0, 320, 200)).setTo(0.0f);  // no depth over the top right
   const SpriteDraw draw = drawInto(frame, threeMetresAhead());
   EXPECT_NEAR(draw.visible, draw.pixels / 2, draw.pixels / 20) << "the right half only";
+  RenderOutput open = wall();
+  EXPECT_EQ(draw.box, drawInto(open, threeMetresAhead()).box) << "amodal: the hidden half too";
   EXPECT_EQ(cv::countNonZero(frame.label(cv::Rect(0, 0, 320, 480)) == 7), 0);
   EXPECT_EQ(frame.depth.at<float>(300, 310), 2.0f) << "the table keeps its depth";
   EXPECT_EQ(frame.rgb.at<cv::Vec3b>(300, 310), cv::Vec3b(90, 90, 90)) << "and its colour";

@@ -2,6 +2,7 @@
 
 #include "dynslam/viz/IdColours.h"
 
+#include <mrpt/maps/CColouredPointsMap.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfLines.h>
@@ -90,6 +91,7 @@ void MapSceneBuilder::addFrame(const core::Frame& frame) {
 void MapSceneBuilder::addStaticPoints(const core::Frame& f) {
   const auto& k = f.intrinsics;
   if (f.depth.empty() || f.depth.type() != CV_32FC1 || k.fx <= 0 || k.fy <= 0) return;
+  ++static_updates_;
   const bool colour = !f.rgb.empty() && f.rgb.size() == f.depth.size() && f.rgb.type() == CV_8UC3;
   const cv::Mat objects = objectPixels(f, f.depth.size());
   const Eigen::Isometry3f T = f.T_world_camera->cast<float>();
@@ -130,6 +132,17 @@ void MapSceneBuilder::save(const std::string& path) const {
   fill(scene);
   if (!scene.saveToFile(path))
     throw std::runtime_error("cannot write the map scene '" + path + "'");
+}
+
+std::shared_ptr<mrpt::maps::CColouredPointsMap> MapSceneBuilder::staticPoints() const {
+  auto map = std::make_shared<mrpt::maps::CColouredPointsMap>();
+  map->reserve(voxels_.size());
+  for (const auto& [key, voxel] : voxels_) {
+    const Eigen::Vector3f p = voxel.position_sum / static_cast<float>(voxel.count);
+    const Eigen::Vector3f bgr = voxel.bgr_sum / (255.f * static_cast<float>(voxel.count));
+    map->insertPointRGB(p.x(), p.y(), p.z(), bgr.z(), bgr.y(), bgr.x());
+  }
+  return map;
 }
 
 void MapSceneBuilder::fill(mrpt::opengl::COpenGLScene& scene) const {

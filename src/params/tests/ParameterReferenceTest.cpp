@@ -5,7 +5,7 @@
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/testing/TestEnv.h>
 
-#include "runner/BuiltinStages.h"
+#include <dynslam/system/BuiltinStages.h>
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,7 @@ TEST(ParameterReference, CommittedPageIsWhatTheCodeGenerates) {
 TEST(ParameterReference, EveryStageAndEveryKeyIsThere) {
   const auto all = params::collectParameters();
   core::StageRegistry registry;
-  runner::registerBuiltinStages(registry);
+  system::registerBuiltinStages(registry);
   for (const auto& className : registry.classNames()) {
     const auto* s = find(all, "dynslam", className);
     ASSERT_TRUE(s) << "registered stage " << className << " has no section in the reference";

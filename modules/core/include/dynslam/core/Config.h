@@ -28,6 +28,9 @@ class IniConfig {
   static IniConfig fromFile(const std::string& path,
                             const std::vector<std::string>& overrides = {});
   static IniConfig fromText(const std::string& text, const std::string& source = "<memory>");
+  /// A copy of an MRPT config (an embedding program's CConfigFile, CConfigFileMemory, ...).
+  static IniConfig fromMrpt(const mrpt::config::CConfigFileBase& ini,
+                            const std::string& source = "<CConfigFileBase>");
 
   /// Applies one "section.key=value"; throws ConfigError when it is not of that form.
   void applyOverride(const std::string& assignment);

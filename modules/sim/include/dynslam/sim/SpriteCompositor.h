@@ -27,9 +27,9 @@ struct SpritePlacement {
 /// What compositeSprite drew: the person's whole (amodal) box in the image, clipped to it, its
 /// pixel count there, and how many of them were nearer than the frame (visible).
 struct SpriteDraw {
-  cv::Rect box;
-  int pixels = 0;
-  int visible = 0;
+  cv::Rect box;     ///< the person's amodal box: round every pixel of the silhouette, hidden or not
+  int pixels = 0;   ///< silhouette pixels in the image
+  int visible = 0;  ///< of them, drawn (nearer than the frame's depth)
 };
 
 /// Draws `sprite` at `placement` into `frame` (rgb CV_8UC3, depth CV_32FC1 m along the optical

@@ -13,8 +13,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include <memory>
+
 namespace mrpt::opengl {
 class COpenGLScene;
+}
+namespace mrpt::maps {
+class CColouredPointsMap;
 }
 
 namespace dynslam::viz {
@@ -54,6 +59,11 @@ class MapSceneBuilder {
   /// Inserts the same objects into `scene` (the live window's; cleared by the caller).
   void fill(mrpt::opengl::COpenGLScene& scene) const;
 
+  /// The static map's points (one per voxel: mean position and colour) as an MRPT point map.
+  std::shared_ptr<mrpt::maps::CColouredPointsMap> staticPoints() const;
+  /// Frames back-projected into the static map so far: it changes when this does.
+  std::size_t staticUpdates() const { return static_updates_; }
+
   std::size_t pointCount() const { return voxels_.size(); }
   /// Back-projected points that found no voxel because max_points was reached.
   std::size_t pointsRefused() const { return points_refused_; }
@@ -71,6 +81,7 @@ class MapSceneBuilder {
   MapSceneOptions options_;
   std::size_t posed_frames_ = 0;
   std::size_t points_refused_ = 0;
+  std::size_t static_updates_ = 0;
   std::unordered_map<std::uint64_t, Voxel> voxels_;
   std::vector<Eigen::Vector3f> camera_;
   std::map<int, std::vector<Eigen::Vector3f>> objects_;

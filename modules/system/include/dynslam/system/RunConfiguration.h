@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace dynslam::runner {
+namespace dynslam::system {
 
 struct RunConfiguration {
   core::Pipeline pipeline;
@@ -29,4 +29,4 @@ RunConfiguration configureRun(const core::IniConfig& cfg);
 void printEffectiveConfig(const std::string& config, const std::vector<std::string>& overrides,
                           std::ostream& out);
 
-}  // namespace dynslam::runner
+}  // namespace dynslam::system

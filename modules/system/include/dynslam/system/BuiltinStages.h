@@ -4,9 +4,9 @@ namespace dynslam::core {
 class StageRegistry;
 }
 
-namespace dynslam::runner {
+namespace dynslam::system {
 
 /// Registers the stages of every module linked into the programs.
 void registerBuiltinStages(core::StageRegistry& registry);
 
-}  // namespace dynslam::runner
+}  // namespace dynslam::system

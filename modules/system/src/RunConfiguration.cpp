@@ -1,6 +1,6 @@
-#include "RunConfiguration.h"
+#include <dynslam/system/RunConfiguration.h>
 
-#include "BuiltinStages.h"
+#include <dynslam/system/BuiltinStages.h>
 
 #include <dynslam/core/Options.h>
 #include <dynslam/core/StageRegistry.h>
@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-namespace dynslam::runner {
+namespace dynslam::system {
 namespace {
 
 /// Each options struct's keys as they stand once loaded, section by section in load order.
@@ -19,8 +19,7 @@ class LoadedOptions : public core::OptionsObserver {
  public:
   std::vector<std::pair<std::string, std::vector<core::KeyDoc>>> sections;
 
-  void loaded(const mrpt::config::CLoadableOptions& options,
-              const std::string& section) override {
+  void loaded(const mrpt::config::CLoadableOptions& options, const std::string& section) override {
     auto it = std::find_if(sections.begin(), sections.end(),
                            [&](const auto& s) { return s.first == section; });
     if (it == sections.end()) it = sections.insert(sections.end(), {section, {}});
@@ -28,8 +27,10 @@ class LoadedOptions : public core::OptionsObserver {
       auto& keys = it->second;
       auto same = std::find_if(keys.begin(), keys.end(),
                                [&](const core::KeyDoc& k) { return k.key == key.key; });
-      if (same == keys.end()) keys.push_back(std::move(key));
-      else *same = std::move(key);
+      if (same == keys.end())
+        keys.push_back(std::move(key));
+      else
+        *same = std::move(key);
     }
   }
 
@@ -100,4 +101,4 @@ void printEffectiveConfig(const std::string& config, const std::vector<std::stri
   }
 }
 
-}  // namespace dynslam::runner
+}  // namespace dynslam::system

@@ -1,4 +1,4 @@
-#include "BuiltinStages.h"
+#include <dynslam/system/BuiltinStages.h>
 
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/detection/RegisterStages.h>
@@ -8,7 +8,7 @@
 #include <dynslam/segmentation/RegisterStages.h>
 #include <dynslam/tracking/RegisterStages.h>
 
-namespace dynslam::runner {
+namespace dynslam::system {
 
 void registerBuiltinStages(core::StageRegistry& registry) {
   // Each module adds its line here as its stages land (detection, segmentation, tracking,
@@ -21,4 +21,4 @@ void registerBuiltinStages(core::StageRegistry& registry) {
   frontend::registerStages(registry);
 }
 
-}  // namespace dynslam::runner
+}  // namespace dynslam::system
