@@ -3,8 +3,13 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <dynslam/core/Options.h>
+
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
 
 namespace dynslam::core {
@@ -34,6 +39,7 @@ IniConfig IniConfig::fromFile(const std::string& path, const std::vector<std::st
   std::stringstream text;
   text << in.rdbuf();
   IniConfig cfg = fromText(text.str(), path);
+  cfg.folder_ = std::filesystem::absolute(path).parent_path().string();
   for (const auto& o : overrides) cfg.applyOverride(o);
   return cfg;
 }
@@ -101,6 +107,57 @@ OptionsObserver* setOptionsObserver(OptionsObserver* observer) {
   return previous;
 }
 
+namespace {
+
+std::mutex g_lookupMutex;
+std::map<std::string, std::string> g_lookups;  // path value -> where it was looked for
+
+/// Takes each relative input path the section sets from the ini's folder when the working
+/// directory has nothing of that name and the ini's folder has; notes both places otherwise.
+class PathResolver : public OptionVisitor {
+ public:
+  PathResolver(const IniConfig& cfg, const std::string& section) : cfg_(cfg), section_(section) {}
+
+  void key(const std::string&, double&, Range, const std::string&) override {}
+  void key(const std::string&, int&, Range, const std::string&) override {}
+  void key(const std::string&, bool&, const std::string&) override {}
+  void key(const std::string&, std::string&, const std::string&) override {}
+  void word(const std::string&, std::string&, const std::vector<std::string>&,
+            const std::string&) override {}
+  void path(const std::string& name, std::string& value, const std::string&) override {
+    namespace fs = std::filesystem;
+    if (value.empty() || fs::path(value).is_absolute() || fs::exists(value) ||
+        !cfg_.ini().keyExists(section_, name))
+      return;
+    const fs::path besideIni = fs::path(cfg_.folder()) / value;
+    if (!cfg_.folder().empty() && fs::exists(besideIni)) {
+      value = besideIni.lexically_normal().string();
+      return;
+    }
+    std::string places = (fs::current_path() / value).lexically_normal().string();
+    if (!cfg_.folder().empty()) places += " and " + besideIni.lexically_normal().string();
+    std::lock_guard<std::mutex> lock(g_lookupMutex);
+    g_lookups[value] = " (looked for as " + places + ")";
+  }
+
+ private:
+  const IniConfig& cfg_;
+  const std::string& section_;
+};
+
+void resolvePaths(Options& options, const IniConfig& cfg, const std::string& section) {
+  PathResolver resolver(cfg, section);
+  options.describe(resolver);
+}
+
+}  // namespace
+
+std::string pathLookup(const std::string& value) {
+  std::lock_guard<std::mutex> lock(g_lookupMutex);
+  const auto it = g_lookups.find(value);
+  return it == g_lookups.end() ? "" : it->second;
+}
+
 void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,
                        const std::string& section) {
   if (t_optionsObserver) t_optionsObserver->aboutToLoad(options, section);
@@ -117,6 +174,7 @@ void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig&
   } catch (const std::invalid_argument& e) {  // a value readOneOf / readBool / ... refused
     throw ConfigError("[" + section + "] in " + cfg.source() + ": " + e.what());
   }
+  if (auto* described = dynamic_cast<Options*>(&options)) resolvePaths(*described, cfg, section);
   if (t_optionsObserver) t_optionsObserver->loaded(options, section);
 }
 

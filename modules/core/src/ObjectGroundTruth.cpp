@@ -1,5 +1,7 @@
 #include "dynslam/core/ObjectGroundTruth.h"
 
+#include "dynslam/core/Config.h"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -115,7 +117,9 @@ ObjectGroundTruthRow parseRow(const LineFields& f) {
 
 std::vector<ObjectGroundTruthRow> readObjectGroundTruth(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw ObjectGroundTruthError("cannot open object ground truth file '" + path + "'");
+  if (!in)
+    throw ObjectGroundTruthError("cannot open object ground truth file '" + path + "'" +
+                                 pathLookup(path));
   std::vector<ObjectGroundTruthRow> rows;
   std::string line;
   std::size_t line_no = 0;

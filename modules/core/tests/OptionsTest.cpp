@@ -4,8 +4,11 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 
 using namespace dynslam::core;
 
@@ -27,7 +30,7 @@ struct ExampleOptions : Options {
     v.key("iterations", iterations, Range::atLeast(1), "how many times");
     v.key("refine", refine, "refine the result");
     v.key("refine_steps", refine_steps, Range::atLeast(0), "0 = off; steps of refinement");
-    v.key("model", model, "model file");
+    v.path("model", model, "model file");
     v.key("mode", mode, kModes, "fast | exact");
     v.requires("refine_steps", refine_steps > 0, "refine = true", refine);
   }
@@ -148,4 +151,24 @@ TEST(Range, Text) {
   EXPECT_EQ(Range::closed(0, 2).text(), "[0, 2]");
   EXPECT_FALSE(Range::above(0).contains(0));
   EXPECT_FALSE(Range::any().contains(std::nan("")));
+}
+
+TEST(Options, ARelativePathTheWorkingDirectoryLacksIsTakenFromTheInisFolder) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("dynslam-options-" + std::to_string(getpid()));
+  fs::create_directories(dir / "models");
+  std::ofstream(dir / "models" / "net.onnx") << "x";
+  std::ofstream(dir / "a.ini") << "[Ex]\nmodel = models/net.onnx\n";
+  ExampleOptions o;
+  loadOptionsStrict(o, IniConfig::fromFile((dir / "a.ini").string()), "Ex");
+  EXPECT_EQ(o.model, (dir / "models" / "net.onnx").string()) << "found beside the ini";
+
+  std::ofstream(dir / "b.ini") << "[Ex]\nmodel = models/missing.onnx\n";
+  ExampleOptions missing;
+  loadOptionsStrict(missing, IniConfig::fromFile((dir / "b.ini").string()), "Ex");
+  EXPECT_EQ(missing.model, "models/missing.onnx") << "left for its user to refuse";
+  const std::string lookup = pathLookup("models/missing.onnx");
+  EXPECT_TRUE(contains(lookup, (fs::current_path() / "models/missing.onnx").string())) << lookup;
+  EXPECT_TRUE(contains(lookup, (dir / "models/missing.onnx").string())) << lookup;
+  fs::remove_all(dir);
 }

@@ -9,7 +9,8 @@ constexpr core::Keyword<YoloLayout> kLayouts[] = {
     {"yolox", YoloLayout::YoloX}, {"yolov5", YoloLayout::YoloV5}, {"yolov8", YoloLayout::YoloV8}};
 
 void describeOnnxYolo(core::OptionVisitor& v, OnnxYoloDetectorSettings& o) {
-  v.key("model", o.model, "ONNX file (relative: working directory)");
+  v.path("model", o.model,
+         "ONNX file (relative: from the working directory, else the ini's folder)");
   v.key("layout", o.layout, kLayouts,
         "output layout: yolox (BGR 0-255) | yolov5 | yolov8 (RGB 0-1)");
   v.key("input_size", o.input_size, Range::atLeast(32),
@@ -32,7 +33,8 @@ void describeHog(core::OptionVisitor& v, HogPeopleDetectorSettings& o) {
 }
 
 void describeGroundTruth(core::OptionVisitor& v, GroundTruthDetectorSettings& o) {
-  v.key("objects", o.objects, "dynslam-sim objects.txt (relative: working dir)");
+  v.path("objects", o.objects,
+         "dynslam-sim objects.txt (relative: from the working directory, else the ini's folder)");
   v.key("miss_rate", o.miss_rate, Range::closed(0, 1), "probability a visible object is missed");
   v.key("jitter_px", o.jitter_px, Range::atLeast(0), "Gaussian sigma per box edge, px");
   v.key("false_positive_rate", o.false_positive_rate, Range::atLeast(0),

@@ -1,5 +1,7 @@
 #include "dynslam/detection/OnnxYoloDetector.h"
 
+#include <dynslam/core/Config.h>
+
 #include <opencv2/core/utility.hpp>
 
 #include <fstream>
@@ -60,7 +62,8 @@ OnnxYoloDetector::OnnxYoloDetector(OnnxYoloDetectorSettings settings, ClassMap c
                         ": must be a positive multiple of 32 (the coarsest stride)");
   // Checked first: OpenCV's own message for a missing file is an assertion deep in its parser.
   if (!std::ifstream(s.model, std::ios::binary))
-    throw DetectorError("cannot read the YOLO model '" + s.model + "' (missing or unreadable)");
+    throw DetectorError("cannot read the YOLO model '" + s.model + "' (missing or unreadable)" +
+                        core::pathLookup(s.model));
   try {
     net_ = cv::dnn::readNetFromONNX(s.model);
   } catch (const cv::Exception& e) {

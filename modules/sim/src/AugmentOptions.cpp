@@ -9,12 +9,12 @@ namespace dynslam::sim {
 void AugmentOptions::describe(core::OptionVisitor& v) {
   using core::Range;
   const Range positive = Range::above(0), count = Range::atLeast(1), off = Range::atLeast(0);
-  v.key("rawlog", rawlog,
-        "the real sequence: a sevenscenes2rawlog output (RGB-D observations); relative paths "
-        "resolve against the working directory");
-  v.key("groundtruth", groundtruth,
-        "its ground truth (TUM, camera-to-world); empty: the rawlog's path with .rawlog replaced "
-        "by .gt.tum, the file sevenscenes2rawlog writes beside it");
+  v.path("rawlog", rawlog,
+         "the real sequence: a sevenscenes2rawlog output (RGB-D observations); relative: from "
+         "the working directory, else the ini's folder");
+  v.path("groundtruth", groundtruth,
+         "its ground truth (TUM, camera-to-world); empty: the rawlog's path with .rawlog replaced "
+         "by .gt.tum, the file sevenscenes2rawlog writes beside it");
   v.key("knot_interval", knot_interval, positive,
         "s between control points of the B-spline fitted to the ground truth for the IMU (longer "
         "smooths more pose jitter but follows quick hand motion less closely)");

@@ -80,9 +80,9 @@ void PeopleOptions::describe(core::OptionVisitor& v) {
   v.word("appearance", appearance, {"rendered", "video"},
          "rendered: textured bodies; video: real people's pixels from a sprite bank (sprites), "
          "each on a body-shaped surface at a height of 1.55-1.90 m");
-  v.key("sprites", sprites,
-        "the sprite bank folder for appearance = video (dynslam-sprites --out DIR; relative to "
-        "the working folder)");
+  v.path("sprites", sprites,
+         "the sprite bank folder for appearance = video (dynslam-sprites --out DIR; relative: "
+         "from the working directory, else the ini's folder)");
   v.requires("sprites", !sprites.empty(), "appearance = video", appearance == "video");
 }
 

@@ -37,6 +37,9 @@ class IniConfig {
 
   const mrpt::config::CConfigFileBase& ini() const;
   const std::string& source() const { return source_; }
+  /// The folder of the file it was read from ("" when it came from text): where the relative
+  /// paths it sets are looked for when the working directory has none of that name.
+  const std::string& folder() const { return folder_; }
   std::vector<std::string> sections() const;
   std::vector<std::string> keys(const std::string& section) const;
 
@@ -44,13 +47,20 @@ class IniConfig {
   IniConfig(std::shared_ptr<mrpt::config::CConfigFileMemory> mem, std::string source);
   std::shared_ptr<mrpt::config::CConfigFileMemory> mem_;
   std::string source_;
+  std::string folder_;
 };
+
+/// Where an input path an ini set was looked for when it was found in neither place (" (looked
+/// for as A and B)"), "" otherwise: for the error of whoever opens it.
+std::string pathLookup(const std::string& value);
 
 /// The keys an options struct knows: those its saveToConfigFile() writes.
 std::vector<std::string> knownKeys(const mrpt::config::CLoadableOptions& options);
 
 /// Loads `options` from `section` after checking that every key the section holds is one
 /// `options` knows; otherwise throws ConfigError naming the key, the section and the source.
+/// A relative input path (OptionVisitor::path) the section sets that does not exist from the
+/// working directory but does from the ini's folder is taken from there.
 /// A value the options refuse while loading (std::invalid_argument, e.g. from readBool or
 /// readKeyword) becomes a ConfigError naming the section and the source too.
 void loadOptionsStrict(mrpt::config::CLoadableOptions& options, const IniConfig& cfg,

@@ -28,15 +28,15 @@ struct Feature {
   bool depth_at_edge = false;
   int track_length = 1;  ///< frames this corner has been tracked, this one included
   FeatureClass feature_class = FeatureClass::Static;
-  int object_id = -1;    ///< Track::id of the object whose mask holds it; -1 = background
+  int object_id = -1;  ///< Track::id of the object whose mask holds it; -1 = background
 };
 
 /// Whether a tracked object moves (method.md section 3: mean scene flow / frame interval).
 struct ObjectMotionState {
-  int object_id = -1;     ///< Track::id
-  double speed = 0;       ///< m/s, mean |scene flow| of its features over the frame interval
-  int features = 0;       ///< features with depth in both frames that the speed averages
-  bool dynamic = false;   ///< speed above the threshold
+  int object_id = -1;    ///< Track::id
+  double speed = 0;      ///< m/s, mean |scene flow| of its features over the frame interval
+  int features = 0;      ///< features with depth in both frames that the speed averages
+  bool dynamic = false;  ///< speed above the threshold
 };
 
 /// A rigid point set (method.md section 4) and its motion from the previous frame to this one.
@@ -44,8 +44,8 @@ struct ObjectMotionState {
 /// frame's camera frame to its position q in this frame's camera frame (the method's
 /// registration; it contains the camera's own motion).
 struct RigidSet {
-  int object_id = -1;                   ///< Track::id of the object it lies on
-  std::vector<std::int64_t> members;    ///< Feature::id of the inliers
+  int object_id = -1;                 ///< Track::id of the object it lies on
+  std::vector<std::int64_t> members;  ///< Feature::id of the inliers
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   Eigen::Vector3d t = Eigen::Vector3d::Zero();
   Eigen::Vector3d virtual_centroid = Eigen::Vector3d::Zero();  ///< camera frame, this frame

@@ -30,9 +30,9 @@ struct Range {
   bool min_open = false, max_open = false;
 
   static Range any() { return {}; }
-  static Range atLeast(double v) { return {v, any().max, false, false}; }  ///< [v, inf)
-  static Range above(double v) { return {v, any().max, true, false}; }     ///< (v, inf)
-  static Range closed(double a, double b) { return {a, b, false, false}; } ///< [a, b]
+  static Range atLeast(double v) { return {v, any().max, false, false}; }      ///< [v, inf)
+  static Range above(double v) { return {v, any().max, true, false}; }         ///< (v, inf)
+  static Range closed(double a, double b) { return {a, b, false, false}; }     ///< [a, b]
   static Range closedOpen(double a, double b) { return {a, b, false, true}; }  ///< [a, b)
 
   bool contains(double v) const;
@@ -54,6 +54,11 @@ class OptionVisitor {
   virtual void key(const std::string& name, bool& value, const std::string& meaning) = 0;
   /// Free text (a path, a label, a list).
   virtual void key(const std::string& name, std::string& value, const std::string& meaning) = 0;
+  /// An input file or folder. Relative, it is looked for from the working directory, then from
+  /// the folder of the ini that set it (loadOptionsStrict), so an ini's paths work from anywhere.
+  virtual void path(const std::string& name, std::string& value, const std::string& meaning) {
+    key(name, value, meaning);
+  }
   /// One word of `words`.
   virtual void word(const std::string& name, std::string& value,
                     const std::vector<std::string>& words, const std::string& meaning) = 0;
