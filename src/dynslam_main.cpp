@@ -1,6 +1,6 @@
 // dynslam: plays a rawlog through the stages an ini file configures and writes the trajectory.
-#include "runner/LiveView.h"
 #include <dynslam/system/RunConfiguration.h>
+#include "runner/LiveView.h"
 #include "runner/Runner.h"
 
 #include <dynslam/core/CommandLine.h>
@@ -12,6 +12,7 @@
 namespace {
 const char* kUsage =
     R"(usage: dynslam --config FILE.ini --rawlog FILE.rawlog --out DIR [options]
+       dynslam --config FILE.ini --sensors SENSORS.ini [--record FILE.rawlog] --out DIR [options]
        dynslam --config FILE.ini [--set Section.key=value]... --print-config
        dynslam -h | --help
 
@@ -25,6 +26,15 @@ Options:
   --rawlog FILE.rawlog       the input: RGB-D CObservation3DRangeScan, CObservationIMU,
                              CObservationGPS (GGA), in the observation or the
                              action/sensory-frame layout
+  --sensors SENSORS.ini      live sensors instead of a rawlog: MRPT hwdrivers sensors, one
+                             section each as rawlog-grabber reads them (driver = COpenNI2Sensor,
+                             CKinect, CCameraSensor, CIMUXSens_MT4, CGPSInterface, or
+                             CRawlogReplaySensor with rawlog = FILE; process_rate, sensorLabel),
+                             each on a thread of its own; Ctrl-C ends the run with every output
+                             written (params/live/)
+  --record FILE.rawlog       with --sensors: also write what the sensors delivered as a rawlog
+  --sensor-timeout S         with --sensors: no observation for S seconds ends the run as
+                             failed, outputs kept (default 5)
   --out DIR                  the output folder (created; files in it are replaced)
   --set Section.key=value    override one ini value (repeatable, applied in order); unknown
                              keys, sections and stage names are errors
@@ -87,7 +97,8 @@ int main(int argc, char** argv) {
   return dynslam::core::runProgram("dynslam", [&] {
     dynslam::core::CommandLine cl(
         {"--config", "--rawlog", "--out", "--max-frames", "--frames", "--gt", "--map-every",
-         "--map-voxel", "--gui-rate", "--gui-screenshot"},
+         "--map-voxel", "--gui-rate", "--gui-screenshot", "--sensors", "--record",
+         "--sensor-timeout"},
         {"--quiet", "--realtime", "--no-video", "--no-map", "--gui", "--print-config"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
@@ -100,7 +111,14 @@ int main(int argc, char** argv) {
     }
     dynslam::runner::RunnerArgs args;
     args.config = cl.required("--config");
-    args.rawlog = cl.required("--rawlog");
+    args.sensors = cl.valueOr("--sensors", "");
+    if (args.sensors.empty() == !cl.has("--rawlog"))
+      throw dynslam::core::UsageError("give --rawlog or --sensors, one of them");
+    args.rawlog = args.sensors.empty() ? cl.required("--rawlog") : args.sensors;
+    args.record = cl.valueOr("--record", "");
+    args.sensor_timeout_s = cl.optionalDouble("--sensor-timeout").value_or(args.sensor_timeout_s);
+    if (!args.record.empty() && args.sensors.empty())
+      throw dynslam::core::UsageError("--record goes with --sensors");
     args.out = cl.required("--out");
     args.overrides = cl.all("--set");
     args.max_frames = cl.optionalInteger("--max-frames").value_or(-1);

@@ -4,11 +4,13 @@
 #include "AnnotatedOutput.h"
 #include "GroundTruthScore.h"
 #include "KeyframeLog.h"
+#include "LiveSensors.h"
 #include "LiveView.h"
 #include "RunSummary.h"
 #include "TimingLog.h"
 #include "TrajectoryFiles.h"
 
+#include <dynslam/core/Options.h>
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/io/RawlogSource.h>
@@ -16,7 +18,10 @@
 #include <dynslam/system/System.h>
 #include <dynslam/viz/MapScene.h>
 
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <unistd.h>
 #include <algorithm>
@@ -165,7 +170,72 @@ class DynslamRun {
       system_->addSink(live_);
     }
     system_->addSink(std::make_shared<RecordSink>(*this));
-    source_.emplace(args_.rawlog);
+    if (args_.sensors.empty()) {
+      source_.emplace(args_.rawlog);
+    } else {
+      sensors_ = std::make_unique<LiveSensors>(args_.sensors);
+      if (!args_.record.empty()) {
+        record_ = std::make_unique<mrpt::io::CFileGZOutputStream>();
+        if (!record_->open(args_.record))
+          throw std::runtime_error("--record: cannot write '" + args_.record + "'");
+      }
+    }
+  }
+
+  /// The next observation of the rawlog or the live sensors (recorded with --record), its
+  /// images decoded; nullptr at the end. A read error lets System finish what came before it.
+  std::shared_ptr<mrpt::obs::CObservation> nextObservation() {
+    try {
+      if (!sensors_) {
+        auto observation = source_->next();
+        // Externally stored images decoded here, on the reading thread, not on System's:
+        // decoding on the pipeline's thread took about 30 % of a run.
+        if (observation) observation->load();
+        readFraction_ = source_->progress();
+        return observation;
+      }
+      return nextLiveObservation();
+    } catch (...) {
+      system_->drain();  // the frames read before the damage, as a run that stopped there
+      throw;
+    }
+  }
+
+  std::shared_ptr<mrpt::obs::CObservation> nextLiveObservation() {
+    using Clock = std::chrono::steady_clock;
+    const auto since = Clock::now();
+    std::shared_ptr<mrpt::obs::CObservation> observation;
+    for (;;) {  // in short waits, so that Ctrl-C is seen
+      const LiveSensors::Wait waited = sensors_->next(0.2, observation);
+      if (waited == LiveSensors::Wait::Ended || g_interrupted) return nullptr;
+      if (waited == LiveSensors::Wait::Observation) break;
+      if (std::chrono::duration<double>(Clock::now() - since).count() > args_.sensor_timeout_s)
+        throw std::runtime_error("no observation from the sensors of " + args_.sensors + " for " +
+                                 core::formatNumber(args_.sensor_timeout_s) +
+                                 " s (--sensor-timeout)");
+    }
+    if (record_) recordObservation(*observation);
+    return observation;
+  }
+
+  /// --record: the observation into the rawlog; images a replayed rawlog stores as files are
+  /// copied into the recording's own <stem>_Images folder under the same names.
+  void recordObservation(const mrpt::obs::CObservation& observation) {
+    if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&observation)) {
+      const fs::path images = fs::path(args_.record).parent_path() /
+                              (fs::path(args_.record).stem().string() + "_Images");
+      const auto copy = [&](const std::string& from, const std::string& name) {
+        fs::create_directories((images / name).parent_path());
+        fs::copy_file(from, images / name, fs::copy_options::overwrite_existing);
+      };
+      if (scan->hasIntensityImage && scan->intensityImage.isExternallyStored())
+        copy(scan->intensityImage.getExternalStorageFileAbsolutePath(),
+             scan->intensityImage.getExternalStorageFile());
+      if (scan->hasRangeImage && scan->rangeImage_isExternallyStored())
+        copy(scan->rangeImage_getExternalStorageFileAbsolutePath(""),
+             scan->rangeImage_getExternalStorageFile(""));
+    }
+    mrpt::serialization::archiveFrom(*record_) << observation;
   }
 
   /// The rawlog's observations into System, one by one, until the end, --max-frames or Ctrl-C.
@@ -176,18 +246,8 @@ class DynslamRun {
       return args_.max_frames >= 0 && long(system_->framesProcessed()) >= args_.max_frames;
     };
     while (!g_interrupted && !enough()) {
-      std::shared_ptr<mrpt::obs::CObservation> observation;
-      try {
-        observation = source_->next();
-        // Externally stored images decoded here, on the reading thread, not on System's:
-        // decoding on the pipeline's thread took about 30 % of a run.
-        if (observation) observation->load();
-      } catch (...) {
-        system_->drain();  // the frames read before the damage, as a run that stopped there
-        throw;
-      }
+      const auto observation = nextObservation();
       if (!observation) break;
-      readFraction_ = source_->progress();
       system_->onNewObservation(observation);
     }
     if (g_interrupted)
@@ -328,6 +388,8 @@ class DynslamRun {
   // Declared after the sinks it holds and before the rawlog: destroyed first of the two.
   std::optional<system::System> system_;
   std::optional<io::RawlogSource> source_;
+  std::unique_ptr<LiveSensors> sensors_;                   // --sensors
+  std::unique_ptr<mrpt::io::CFileGZOutputStream> record_;  // --record
 };
 
 }  // namespace

@@ -14,10 +14,10 @@ struct RunnerArgs {
   std::vector<std::string> overrides;  ///< "section.key=value"
   long max_frames = -1;                ///< stop after this many frames (-1: all)
   bool quiet = false;                  ///< no progress output
-  std::string frames_dir;  ///< non-empty: an annotated PNG per frame there (viz::AnnotatedFrame)
-  bool frames_video = true;      ///< with frames_dir: also frames_dir/annotated.avi (Motion-JPEG)
-  std::string ground_truth;      ///< non-empty: TUM file; APE (SE(3)-aligned) into summary.json
-  bool map = true;               ///< write out/map.3Dscene (viz::MapSceneBuilder)
+  std::string frames_dir;    ///< non-empty: an annotated PNG per frame there (viz::AnnotatedFrame)
+  bool frames_video = true;  ///< with frames_dir: also frames_dir/annotated.avi (Motion-JPEG)
+  std::string ground_truth;  ///< non-empty: TUM file; APE (SE(3)-aligned) into summary.json
+  bool map = true;           ///< write out/map.3Dscene (viz::MapSceneBuilder)
   int map_every_n_frames = 10;   ///< static points from one posed frame in this many
   double map_voxel_size = 0.05;  ///< m, the static map's voxel grid
   /// Play the rawlog at camera rate (each frame handed to the pipeline no earlier than its
@@ -29,6 +29,10 @@ struct RunnerArgs {
   bool gui = false;
   double gui_max_rate_hz = 10.0;
   std::string gui_screenshot;  ///< non-empty (with gui): the window's picture at the end, PNG
+  /// Non-empty: live sensors from this ini (LiveSensors) instead of the rawlog.
+  std::string sensors;
+  std::string record;             ///< with sensors, non-empty: what they delivered, as a rawlog
+  double sensor_timeout_s = 5.0;  ///< with sensors: no observation for this long ends the run
 };
 
 /// Runs the whole job. Returns the process exit code: 0 on success, 1 when the input or the

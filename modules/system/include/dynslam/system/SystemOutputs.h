@@ -22,6 +22,7 @@ namespace dynslam::system {
 struct LocalizationUpdate {
   mrpt::Clock::time_point timestamp;  ///< the RGB-D observation's stamp
   std::string reference_frame = "map";
+  std::string method = "dynslam";
   /// The colour camera's optical frame (x right, y down, z forward), as trajectory.tum holds it.
   std::string child_frame = "camera";
   mrpt::math::TPose3D pose;
@@ -33,6 +34,7 @@ struct LocalizationUpdate {
 struct MapUpdate {
   mrpt::Clock::time_point timestamp;
   std::string reference_frame = "map";
+  std::string method = "dynslam";
   std::string map_name = "static_points";
   std::shared_ptr<mrpt::maps::CMetricMap> map;  ///< a mrpt::maps::CColouredPointsMap
 };

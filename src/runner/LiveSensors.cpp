@@ -1,0 +1,102 @@
+#include "LiveSensors.h"
+
+#include "RawlogReplaySensor.h"
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/hwdrivers/CGenericSensor.h>
+#include <mrpt/obs/CObservation.h>
+
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+
+namespace dynslam::runner {
+
+LiveSensors::LiveSensors(const std::string& ini_file) {
+  if (!std::filesystem::exists(ini_file))
+    throw std::runtime_error("--sensors: cannot read '" + ini_file + "'");
+  CRawlogReplaySensor::doRegister();
+  const mrpt::config::CConfigFile ini(ini_file);
+  std::vector<std::string> sections;
+  ini.getAllSections(sections);
+  std::vector<std::string> names;
+  for (const auto& section : sections) {
+    if (section.empty() || section == "global") continue;
+    const std::string driver = ini.read_string(section, "driver", "");
+    const std::string where = "[" + section + "] of " + ini_file;
+    if (driver.empty()) throw std::runtime_error(where + ": no driver = ...");
+    std::shared_ptr<mrpt::hwdrivers::CGenericSensor> sensor(
+        mrpt::hwdrivers::CGenericSensor::createSensor(driver));
+    if (!sensor) throw std::runtime_error(where + ": unknown driver '" + driver + "'");
+    try {
+      sensor->loadConfig(ini, section);
+      sensor->initialize();
+    } catch (const std::exception& e) {
+      stop();
+      throw std::runtime_error(where + ": sensor '" + driver + "' failed to start: " + e.what());
+    }
+    sensors_.push_back(sensor);
+    names.push_back(section);
+  }
+  if (sensors_.empty()) throw std::runtime_error("--sensors " + ini_file + ": no sensor section");
+  running_ = sensors_.size();
+  for (size_t i = 0; i < sensors_.size(); ++i)
+    threads_.emplace_back([this, i, name = names[i]] { run(*sensors_[i], name); });
+}
+
+LiveSensors::~LiveSensors() { stop(); }
+
+void LiveSensors::run(mrpt::hwdrivers::CGenericSensor& sensor, const std::string& section) {
+  const double rate = sensor.getProcessRate() > 0 ? sensor.getProcessRate() : 100.0;
+  const auto period = std::chrono::duration<double>(1.0 / rate);
+  const auto* replay = dynamic_cast<const CRawlogReplaySensor*>(&sensor);
+  try {
+    for (;;) {
+      const auto start = std::chrono::steady_clock::now();
+      sensor.doProcess();
+      mrpt::hwdrivers::CGenericSensor::TListObservations got;
+      sensor.getObservations(got);
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const auto& [stamp, object] : got)
+          if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object))
+            queue_.push_back(obs);
+        if (!got.empty()) arrived_.notify_all();
+        if (stopping_ || (replay && replay->finished())) break;
+      }
+      std::this_thread::sleep_until(start + period);
+    }
+  } catch (const std::exception& e) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (error_.empty()) error_ = "sensor [" + section + "]: " + e.what();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  --running_;
+  arrived_.notify_all();
+}
+
+LiveSensors::Wait LiveSensors::next(double timeout_s,
+                                    std::shared_ptr<mrpt::obs::CObservation>& out) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  const bool any = arrived_.wait_for(lock, std::chrono::duration<double>(timeout_s), [&] {
+    return !queue_.empty() || running_ == 0 || !error_.empty();
+  });
+  if (!error_.empty()) throw std::runtime_error(error_);
+  if (!queue_.empty()) {
+    out = std::move(queue_.front());
+    queue_.pop_front();
+    return Wait::Observation;
+  }
+  return any ? Wait::Ended : Wait::TimedOut;
+}
+
+void LiveSensors::stop() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  for (auto& t : threads_)
+    if (t.joinable()) t.join();
+}
+
+}  // namespace dynslam::runner

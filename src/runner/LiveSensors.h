@@ -1,0 +1,54 @@
+#pragma once
+// `dynslam --sensors FILE.ini`: MRPT hwdrivers sensors configured as rawlog-grabber configures
+// them (one section per sensor with `driver = COpenNI2Sensor | CKinect | CCameraSensor |
+// CIMUXSens_MT4 | CGPSInterface | CRawlogReplaySensor ...`, `process_rate`, `sensorLabel`; a
+// [global] section is ignored), each on a thread of its own at its process_rate, as MRPT's
+// ICP_SLAM_App_Live runs them; their observations merged in arrival order.
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace mrpt::obs {
+class CObservation;
+}
+namespace mrpt::hwdrivers {
+class CGenericSensor;
+}
+
+namespace dynslam::runner {
+
+class LiveSensors {
+ public:
+  /// Creates, configures and initializes every sensor of `ini_file` and starts its thread.
+  /// Throws std::runtime_error naming the file and section: an unknown driver, a bad setting, a
+  /// sensor that fails to initialize (the ones started before it are stopped).
+  explicit LiveSensors(const std::string& ini_file);
+  ~LiveSensors();
+  LiveSensors(const LiveSensors&) = delete;
+  LiveSensors& operator=(const LiveSensors&) = delete;
+
+  enum class Wait { Observation, Ended, TimedOut };
+  /// The next observation, waiting at most `timeout_s`; Ended once every sensor has finished
+  /// (replay sensors at the end of their rawlog) and nothing is left.
+  Wait next(double timeout_s, std::shared_ptr<mrpt::obs::CObservation>& out);
+  void stop();
+  std::size_t sensors() const { return sensors_.size(); }
+
+ private:
+  void run(mrpt::hwdrivers::CGenericSensor& sensor, const std::string& section);
+
+  std::vector<std::shared_ptr<mrpt::hwdrivers::CGenericSensor>> sensors_;
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable arrived_;
+  std::deque<std::shared_ptr<mrpt::obs::CObservation>> queue_;
+  std::size_t running_ = 0;
+  bool stopping_ = false;
+  std::string error_;  // a sensor thread's failure
+};
+
+}  // namespace dynslam::runner

@@ -1,0 +1,95 @@
+// dynslam --sensors: MRPT hwdrivers sensors on threads of their own, without hardware through
+// our rawlog replay driver (CRawlogReplaySensor, at the recorded rate).
+#include <dynslam/testing/SyntheticObservations.h>
+#include <dynslam/testing/SyntheticRoom.h>
+#include <dynslam/testing/TestEnv.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using dynslam::testing::binDir;
+using dynslam::testing::readTextFile;
+using dynslam::testing::runCommand;
+using dynslam::testing::sourceDir;
+using dynslam::testing::writeTextFile;
+
+const char* kOdometry = "[pipeline]\nstages = RgbdOdometry\n[RgbdOdometry]\nmax_depth = 6\n";
+
+std::string replayIni(const std::string& path, const std::string& rawlog) {
+  return writeTextFile(path, "[REPLAY]\ndriver = CRawlogReplaySensor\nrawlog = " + rawlog +
+                                 "\nprocess_rate = 500\nsensorLabel = REPLAY\n");
+}
+
+TEST(LiveSensors, ReplayedLiveGivesThePlaybackTrajectoryAndRecordsWhatCame) {
+  const std::string dir = dynslam::testing::scratchDir(), sim = dir + "/sim";
+  const auto render = runCommand(binDir() + "/dynslam-sim --config " + sourceDir() +
+                                 "/params/sim/indoor_people_high.ini --out " + sim +
+                                 " --set Scenario.duration=2 --quiet");
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  const std::string run = binDir() + "/dynslam --config " + sourceDir() +
+                          "/params/sim_vio.ini --no-map --quiet --set Detection.objects=" + sim +
+                          "/objects.txt --set Estimator.max_solver_time=100 ";
+  const auto live =
+      runCommand(run + "--sensors " + replayIni(dir + "/sensors.ini", sim + "/sim.rawlog") +
+                 " --record " + dir + "/rec.rawlog --out " + dir + "/live");
+  ASSERT_EQ(live.exit_code, 0) << live.output;
+  const auto playback = runCommand(run + "--rawlog " + sim + "/sim.rawlog --out " + dir + "/play");
+  ASSERT_EQ(playback.exit_code, 0) << playback.output;
+  const std::string expected = readTextFile(dir + "/play/trajectory.tum");
+  EXPECT_GT(expected.size(), 1000u);
+  EXPECT_EQ(readTextFile(dir + "/live/trajectory.tum"), expected) << "live replay = playback";
+  const auto recorded = runCommand(run + "--rawlog " + dir + "/rec.rawlog --out " + dir + "/rec");
+  ASSERT_EQ(recorded.exit_code, 0) << recorded.output;
+  EXPECT_EQ(readTextFile(dir + "/rec/trajectory.tum"), expected) << "--record's rawlog plays back";
+}
+
+TEST(LiveSensors, ABadSensorIsAnErrorNamingItsSectionAndOutputsAreKept) {
+  const std::string dir = dynslam::testing::scratchDir();
+  const std::string run = binDir() + "/dynslam --config " +
+                          writeTextFile(dir + "/odo.ini", kOdometry) + " --no-map --quiet --out " +
+                          dir + "/out --sensors ";
+  auto r = runCommand(run + writeTextFile(dir + "/a.ini",
+                                          "[CAM]\ndriver = CNoSuchSensor\n"
+                                          "process_rate = 30\n"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("[CAM] of " + dir + "/a.ini: unknown driver 'CNoSuchSensor'"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(readTextFile(dir + "/out/summary.json").find("\"failed\""), std::string::npos);
+
+  r = runCommand(run + replayIni(dir + "/b.ini", dir + "/missing.rawlog"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("[REPLAY] of " + dir +
+                          "/b.ini: sensor 'CRawlogReplaySensor' failed to "
+                          "start"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("missing.rawlog"), std::string::npos) << r.output;
+}
+
+TEST(LiveSensors, ASensorThatStopsDeliveringEndsTheRunAfterTheTimeoutWithWhatCameBefore) {
+  const std::string dir = dynslam::testing::scratchDir();
+  const auto path = dynslam::testing::handheldPath(4);
+  std::vector<mrpt::serialization::CSerializable::Ptr> objs;
+  for (int i = 0; i < 4; ++i)  // the fourth frame comes 60 s after the third
+    objs.push_back(dynslam::testing::makeRoomScan(i < 3 ? 10.0 + i / 30.0 : 70.0, path[i],
+                                                  dynslam::testing::vgaCamera()));
+  dynslam::testing::writeRawlog(dir + "/gap.rawlog", objs);
+  const auto ini = writeTextFile(
+      dir + "/odo.ini", "[pipeline]\nstages = RgbdOdometry\n[RgbdOdometry]\nmax_depth = 6\n");
+  const auto r = runCommand(binDir() + "/dynslam --config " + ini + " --no-map --quiet --out " +
+                            dir + "/out --sensor-timeout 1 --sensors " +
+                            replayIni(dir + "/s.ini", dir + "/gap.rawlog"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("no observation from the sensors of " + dir + "/s.ini for 1 s"),
+            std::string::npos)
+      << r.output;
+  const std::string trajectory = readTextFile(dir + "/out/trajectory.tum");
+  EXPECT_GE(std::count(trajectory.begin(), trajectory.end(), '\n'), 2) << "the frames before";
+}
+
+}  // namespace
