@@ -34,7 +34,7 @@ Options:
                              written (params/live/)
   --record FILE.rawlog       with --sensors: also write what the sensors delivered as a rawlog
   --sensor-timeout S         with --sensors: no observation for S seconds ends the run as
-                             failed, outputs kept (default 5)
+                             failed, outputs kept (default 5; 0: wait for the sensors)
   --out DIR                  the output folder (created; files in it are replaced)
   --set Section.key=value    override one ini value (repeatable, applied in order); unknown
                              keys, sections and stage names are errors

@@ -1,13 +1,17 @@
 // dynslam --sensors: MRPT hwdrivers sensors on threads of their own, without hardware through
 // our rawlog replay driver (CRawlogReplaySensor, at the recorded rate).
+#include <dynslam/io/RawlogSource.h>
 #include <dynslam/testing/SyntheticObservations.h>
 #include <dynslam/testing/SyntheticRoom.h>
 #include <dynslam/testing/TestEnv.h>
 
 #include <gtest/gtest.h>
 
+#include <mrpt/obs/CObservation.h>
+
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -45,6 +49,36 @@ TEST(LiveSensors, ReplayedLiveGivesThePlaybackTrajectoryAndRecordsWhatCame) {
   const auto recorded = runCommand(run + "--rawlog " + dir + "/rec.rawlog --out " + dir + "/rec");
   ASSERT_EQ(recorded.exit_code, 0) << recorded.output;
   EXPECT_EQ(readTextFile(dir + "/rec/trajectory.tum"), expected) << "--record's rawlog plays back";
+}
+
+TEST(LiveSensors, ACameraAndAnImuOnThreadsOfTheirOwnAreMergedInTimeOrder) {
+  namespace fs = std::filesystem;
+  const std::string dir = dynslam::testing::scratchDir(), sim = dir + "/sim";
+  const auto render = runCommand(binDir() + "/dynslam-sim --config " + sourceDir() +
+                                 "/params/sim/indoor_people_high.ini --out " + sim +
+                                 " --set Scenario.duration=2 --quiet");
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  // The rawlog split into a camera's and an IMU's, each replayed by a sensor of its own.
+  std::vector<mrpt::serialization::CSerializable::Ptr> camera, imu;
+  dynslam::io::RawlogSource source(sim + "/sim.rawlog");
+  while (auto o = source.next()) (o->sensorLabel == "IMU" ? imu : camera).push_back(o);
+  ASSERT_FALSE(imu.empty());
+  dynslam::testing::writeRawlog(dir + "/camera.rawlog", camera);
+  dynslam::testing::writeRawlog(dir + "/imu.rawlog", imu);
+  fs::create_directory_symlink(sim + "/sim_Images", dir + "/camera_Images");
+  const auto sensors =
+      writeTextFile(dir + "/two.ini", "[CAMERA]\ndriver = CRawlogReplaySensor\nrawlog = " + dir +
+                                          "/camera.rawlog\nprocess_rate = 500\n[IMU]\ndriver = "
+                                          "CRawlogReplaySensor\nrawlog = " +
+                                          dir + "/imu.rawlog\nprocess_rate = 500\n");
+  const std::string run = binDir() + "/dynslam --config " + sourceDir() +
+                          "/params/sim_vio.ini --no-map --quiet --set Detection.objects=" + sim +
+                          "/objects.txt --set Estimator.max_solver_time=100 ";
+  const auto live = runCommand(run + "--sensors " + sensors + " --out " + dir + "/live");
+  ASSERT_EQ(live.exit_code, 0) << live.output;
+  const auto playback = runCommand(run + "--rawlog " + sim + "/sim.rawlog --out " + dir + "/play");
+  ASSERT_EQ(playback.exit_code, 0) << playback.output;
+  EXPECT_EQ(readTextFile(dir + "/live/trajectory.tum"), readTextFile(dir + "/play/trajectory.tum"));
 }
 
 TEST(LiveSensors, ABadSensorIsAnErrorNamingItsSectionAndOutputsAreKept) {

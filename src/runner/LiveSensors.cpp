@@ -6,6 +6,7 @@
 #include <mrpt/hwdrivers/CGenericSensor.h>
 #include <mrpt/obs/CObservation.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
@@ -58,9 +59,10 @@ void LiveSensors::run(mrpt::hwdrivers::CGenericSensor& sensor, const std::string
       sensor.getObservations(got);
       {
         std::lock_guard<std::mutex> lock(mutex_);
+        const auto now = std::chrono::steady_clock::now();
         for (const auto& [stamp, object] : got)
           if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object))
-            queue_.push_back(obs);
+            queue_.emplace(mrpt::Clock::toDouble(obs->timestamp), Arrived{now, obs});
         if (!got.empty()) arrived_.notify_all();
         if (stopping_ || (replay && replay->finished())) break;
       }
@@ -77,17 +79,26 @@ void LiveSensors::run(mrpt::hwdrivers::CGenericSensor& sensor, const std::string
 
 LiveSensors::Wait LiveSensors::next(double timeout_s,
                                     std::shared_ptr<mrpt::obs::CObservation>& out) {
+  using Clock = std::chrono::steady_clock;
+  const auto hold =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kMergeHoldS));
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(timeout_s));
   std::unique_lock<std::mutex> lock(mutex_);
-  const bool any = arrived_.wait_for(lock, std::chrono::duration<double>(timeout_s), [&] {
-    return !queue_.empty() || running_ == 0 || !error_.empty();
-  });
-  if (!error_.empty()) throw std::runtime_error(error_);
-  if (!queue_.empty()) {
-    out = std::move(queue_.front());
-    queue_.pop_front();
-    return Wait::Observation;
+  for (;;) {
+    if (!error_.empty()) throw std::runtime_error(error_);
+    // The earliest stamp goes once it has waited out the hold (or no sensor can send more).
+    if (!queue_.empty() && (running_ == 0 || queue_.begin()->second.when + hold <= Clock::now())) {
+      out = std::move(queue_.begin()->second.observation);
+      queue_.erase(queue_.begin());
+      return Wait::Observation;
+    }
+    if (queue_.empty() && running_ == 0) return Wait::Ended;
+    if (Clock::now() >= deadline) return Wait::TimedOut;
+    const auto until =
+        queue_.empty() ? deadline : std::min(deadline, queue_.begin()->second.when + hold);
+    arrived_.wait_until(lock, until);
   }
-  return any ? Wait::Ended : Wait::TimedOut;
 }
 
 void LiveSensors::stop() {

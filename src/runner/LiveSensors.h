@@ -3,9 +3,12 @@
 // them (one section per sensor with `driver = COpenNI2Sensor | CKinect | CCameraSensor |
 // CIMUXSens_MT4 | CGPSInterface | CRawlogReplaySensor ...`, `process_rate`, `sensorLabel`; a
 // [global] section is ignored), each on a thread of its own at its process_rate, as MRPT's
-// ICP_SLAM_App_Live runs them; their observations merged in arrival order.
+// ICP_SLAM_App_Live runs them; their observations merged in time order: each is held for
+// kMergeHoldS after it arrives, so that a sample of another sensor stamped before it but
+// delivered a little later (another thread, another bus) still goes first.
+#include <chrono>
 #include <condition_variable>
-#include <deque>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -23,6 +26,8 @@ namespace dynslam::runner {
 
 class LiveSensors {
  public:
+  static constexpr double kMergeHoldS = 0.1;
+
   /// Creates, configures and initializes every sensor of `ini_file` and starts its thread.
   /// Throws std::runtime_error naming the file and section: an unknown driver, a bad setting, a
   /// sensor that fails to initialize (the ones started before it are stopped).
@@ -45,7 +50,11 @@ class LiveSensors {
   std::vector<std::thread> threads_;
   std::mutex mutex_;
   std::condition_variable arrived_;
-  std::deque<std::shared_ptr<mrpt::obs::CObservation>> queue_;
+  struct Arrived {
+    std::chrono::steady_clock::time_point when;
+    std::shared_ptr<mrpt::obs::CObservation> observation;
+  };
+  std::multimap<double, Arrived> queue_;  // by stamp
   std::size_t running_ = 0;
   bool stopping_ = false;
   std::string error_;  // a sensor thread's failure

@@ -209,7 +209,8 @@ class DynslamRun {
       const LiveSensors::Wait waited = sensors_->next(0.2, observation);
       if (waited == LiveSensors::Wait::Ended || g_interrupted) return nullptr;
       if (waited == LiveSensors::Wait::Observation) break;
-      if (std::chrono::duration<double>(Clock::now() - since).count() > args_.sensor_timeout_s)
+      if (args_.sensor_timeout_s > 0 &&
+          std::chrono::duration<double>(Clock::now() - since).count() > args_.sensor_timeout_s)
         throw std::runtime_error("no observation from the sensors of " + args_.sensors + " for " +
                                  core::formatNumber(args_.sensor_timeout_s) +
                                  " s (--sensor-timeout)");

@@ -31,8 +31,9 @@ struct RunnerArgs {
   std::string gui_screenshot;  ///< non-empty (with gui): the window's picture at the end, PNG
   /// Non-empty: live sensors from this ini (LiveSensors) instead of the rawlog.
   std::string sensors;
-  std::string record;             ///< with sensors, non-empty: what they delivered, as a rawlog
-  double sensor_timeout_s = 5.0;  ///< with sensors: no observation for this long ends the run
+  std::string record;  ///< with sensors, non-empty: what they delivered, as a rawlog
+  double sensor_timeout_s =
+      5.0;  ///< with sensors: no observation for this long ends the run (0: wait)
 };
 
 /// Runs the whole job. Returns the process exit code: 0 on success, 1 when the input or the
