@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     args.sensors = cl.valueOr("--sensors", "");
     if (args.sensors.empty() == !cl.has("--rawlog"))
       throw dynslam::core::UsageError("give --rawlog or --sensors, one of them");
-    args.rawlog = args.sensors.empty() ? cl.required("--rawlog") : args.sensors;
+    args.rawlog = cl.valueOr("--rawlog", "");
     args.record = cl.valueOr("--record", "");
     args.sensor_timeout_s = cl.optionalDouble("--sensor-timeout").value_or(args.sensor_timeout_s);
     if (!args.record.empty() && args.sensors.empty())

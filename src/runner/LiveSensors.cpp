@@ -32,8 +32,7 @@ LiveSensors::LiveSensors(const std::string& ini_file) {
     try {
       sensor->loadConfig(ini, section);
       sensor->initialize();
-    } catch (const std::exception& e) {
-      stop();
+    } catch (const std::exception& e) {  // no thread runs yet; the sensors made close with us
       throw std::runtime_error(where + ": sensor '" + driver + "' failed to start: " + e.what());
     }
     sensors_.push_back(sensor);

@@ -30,7 +30,7 @@ class LiveSensors {
 
   /// Creates, configures and initializes every sensor of `ini_file` and starts its thread.
   /// Throws std::runtime_error naming the file and section: an unknown driver, a bad setting, a
-  /// sensor that fails to initialize (the ones started before it are stopped).
+  /// sensor that fails to initialize (the ones configured before it are closed; none ran).
   explicit LiveSensors(const std::string& ini_file);
   ~LiveSensors();
   LiveSensors(const LiveSensors&) = delete;
@@ -41,7 +41,6 @@ class LiveSensors {
   /// (replay sensors at the end of their rawlog) and nothing is left.
   Wait next(double timeout_s, std::shared_ptr<mrpt::obs::CObservation>& out);
   void stop();
-  std::size_t sensors() const { return sensors_.size(); }
 
  private:
   void run(mrpt::hwdrivers::CGenericSensor& sensor, const std::string& section);

@@ -97,7 +97,11 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   j.beginObject();
   j.member("status", rec.status);
   if (!rec.error.empty()) j.member("error", rec.error);
-  j.member("config", args.config).member("rawlog", args.rawlog);
+  j.member("config", args.config);
+  if (args.sensors.empty())
+    j.member("rawlog", args.rawlog);
+  else
+    j.member("sensors", args.sensors);
   j.key("overrides").beginArray();
   for (const auto& o : args.overrides) j.value(o);
   j.endArray();

@@ -134,14 +134,26 @@ void MapSceneBuilder::save(const std::string& path) const {
     throw std::runtime_error("cannot write the map scene '" + path + "'");
 }
 
+namespace {
+
+/// Each voxel's point: its mean position and mean colour (r, g, b in [0, 1]), in map order.
+template <class Voxels, class Add>
+void forEachVoxelPoint(const Voxels& voxels, Add&& add) {
+  for (const auto& [key, voxel] : voxels) {
+    const Eigen::Vector3f p = voxel.position_sum / static_cast<float>(voxel.count);
+    const Eigen::Vector3f bgr = voxel.bgr_sum / (255.f * static_cast<float>(voxel.count));
+    add(p, bgr.z(), bgr.y(), bgr.x());
+  }
+}
+
+}  // namespace
+
 std::shared_ptr<mrpt::maps::CColouredPointsMap> MapSceneBuilder::staticPoints() const {
   auto map = std::make_shared<mrpt::maps::CColouredPointsMap>();
   map->reserve(voxels_.size());
-  for (const auto& [key, voxel] : voxels_) {
-    const Eigen::Vector3f p = voxel.position_sum / static_cast<float>(voxel.count);
-    const Eigen::Vector3f bgr = voxel.bgr_sum / (255.f * static_cast<float>(voxel.count));
-    map->insertPointRGB(p.x(), p.y(), p.z(), bgr.z(), bgr.y(), bgr.x());
-  }
+  forEachVoxelPoint(voxels_, [&](const Eigen::Vector3f& p, float r, float g, float b) {
+    map->insertPointRGB(p.x(), p.y(), p.z(), r, g, b);
+  });
   return map;
 }
 
@@ -150,11 +162,9 @@ void MapSceneBuilder::fill(mrpt::opengl::COpenGLScene& scene) const {
   cloud->setName(kStaticMapName);
   cloud->setPointSize(2.0f);
   cloud->reserve(voxels_.size());
-  for (const auto& [key, voxel] : voxels_) {
-    const Eigen::Vector3f p = voxel.position_sum / static_cast<float>(voxel.count);
-    const Eigen::Vector3f bgr = voxel.bgr_sum / (255.f * static_cast<float>(voxel.count));
-    cloud->push_back(p.x(), p.y(), p.z(), bgr.z(), bgr.y(), bgr.x());
-  }
+  forEachVoxelPoint(voxels_, [&](const Eigen::Vector3f& p, float r, float g, float b) {
+    cloud->push_back(p.x(), p.y(), p.z(), r, g, b);
+  });
   scene.insert(cloud);
   // Black: no object colour is dark (IdColours keeps every channel >= 64).
   scene.insert(polyline(camera_, kCameraTrajectoryName, {0, 0, 0}, 2.0f));
