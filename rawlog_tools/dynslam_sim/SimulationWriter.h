@@ -8,8 +8,10 @@
 //                               its rigid core, amodal 2-D box, visible pixels and fraction
 //   labels/NNNNNN.png           16-bit instance labels (0 = static scene)
 //   imu_biases.txt              true gyro and accelerometer biases at each IMU sample
+//   calibration.txt             the true and the believed camera-IMU calibration ([Calibration])
 #include <dynslam/rawlog_tools/ColourImageStore.h>
 #include <dynslam/rawlog_tools/RawlogWriter.h>
+#include <dynslam/sim/CalibrationErrors.h>
 #include <dynslam/sim/SimFrame.h>
 
 #include <fstream>
@@ -27,8 +29,10 @@ struct SensorFaults {
 
 class SimulationWriter {
  public:
+  /// `calibration`: the stamps and the believed extrinsic the rawlog gets (CalibrationErrors.h);
+  /// the truth goes to calibration.txt.
   SimulationWriter(const std::string& outDir, const sim::Sequence& sequence,
-                   SensorFaults faults = {});
+                   SensorFaults faults = {}, sim::CalibrationErrorOptions calibration = {});
 
   /// Writes the IMU and GNSS samples up to the frame's time, then the frame.
   void write(const sim::SimFrame& frame);
@@ -39,6 +43,7 @@ class SimulationWriter {
 
  private:
   void writeSamplesUpTo(double t);
+  void writeCalibrationTruth() const;
   double stamp(double t) const { return start_time_ + t; }
 
   const sim::Sequence& sim_;
@@ -50,6 +55,8 @@ class SimulationWriter {
   Eigen::Isometry3d T_body_imu_;  // every IMU observation's sensorPose
   size_t next_imu_ = 0, next_gnss_ = 0;
   SensorFaults faults_;
+  sim::CalibrationErrorOptions calibration_;
+  Eigen::Isometry3d believed_T_body_camera_;  // the RGB-D observations' sensorPose
 };
 
 }  // namespace dynslam::rawlog_tools

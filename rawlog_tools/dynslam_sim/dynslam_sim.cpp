@@ -23,7 +23,7 @@ const char* kUsage =
        dynslam-sim -h | --help
 
 Renders the scenario of NAME.ini (sections [Scenario] [Camera] [People] [Cars] [Imu] [Gnss]
-[Noise] [Augment], every key in docs/parameters.md; scene = room | corridor | market | street,
+[Noise] [Augment] [Calibration], every key in docs/parameters.md; scene = room | corridor | market | street,
 or augment: a real rawlog with movers inserted) into a rawlog with full ground truth. The same
 ini and seed give byte-identical outputs.
 
@@ -52,6 +52,7 @@ Outputs in DIR (formats: docs/programs.md):
                      visible pixels and fraction (the layout in its header)
   labels/NNNNNN.png  16-bit instance ids per pixel (0 = static scene)
   imu_biases.txt     the true gyro and accelerometer biases at each IMU sample
+  calibration.txt    the true and the believed camera-IMU time offset and extrinsic
 Exit codes: 0 written, 1 bad scenario or an output that cannot be written, 2 usage.
 )";
 /// --imu-gap, --black-frames, --no-depth: "FIRST:AMOUNT" pairs.
@@ -128,7 +129,8 @@ int main(int argc, char** argv) {
     const std::unique_ptr<sim::Sequence> sequence = sim::makeSequence(options);
     const sim::Sequence& simulator = *sequence;
     for (const auto& note : simulator.notes()) std::cerr << "dynslam-sim: " << note << "\n";
-    rawlog_tools::SimulationWriter writer(cl.required("--out"), simulator, readFaults(cl));
+    rawlog_tools::SimulationWriter writer(cl.required("--out"), simulator, readFaults(cl),
+                                          options.calibration);
     rawlog_tools::ContactSheet sheet;
     renderAll(simulator, writer, sheetRows(cl, simulator.frameCount()), sheet, cl.has("--quiet"));
     if (cl.has("--contact-sheet")) sheet.save(cl.valueOr("--contact-sheet", ""));

@@ -145,6 +145,40 @@ TEST(DynslamSim, RawlogCarriesTheSensorExtrinsics) {
   }
 }
 
+// [Calibration]: the frames are stamped 20 ms early against the IMU, the rawlog's camera
+// sensorPose is turned 2 degrees from the rendered truth, the ground truth follows the stamps
+// (the pose at the instant each names) and calibration.txt holds both sides.
+TEST(DynslamSim, CalibrationErrorsChangeTheStampsAndTheBelievedExtrinsicNotTheTruth) {
+  const std::string exact = dynslam::testing::scratchDir("exact"),
+                    off = dynslam::testing::scratchDir("calibration_errors");
+  simulate(exact, "--set Scenario.duration=0.5");
+  simulate(off,
+           "--set Scenario.duration=0.5 --set Calibration.time_offset_s=0.02 "
+           "--set Calibration.cam_yaw_error_deg=2");
+  const auto framesExact = framesOf(exact + "/sim.rawlog"),
+             framesOff = framesOf(off + "/sim.rawlog");
+  ASSERT_EQ(framesExact.size(), framesOff.size());
+  for (size_t i = 0; i < framesOff.size(); ++i) {
+    EXPECT_NEAR(framesExact[i].t - framesOff[i].t, 0.02, 1e-6) << i;
+    const Eigen::AngleAxisd turn(framesOff[i].T_body_camera.rotation() *
+                                 framesExact[i].T_body_camera.rotation().transpose());
+    EXPECT_NEAR(turn.angle() * 180 / M_PI, 2.0, 1e-6) << i;
+    EXPECT_NEAR(std::abs(turn.axis().z()), 1.0, 1e-6) << i;
+  }
+  // The first frame's stamp falls before the trajectory starts: no ground truth for it.
+  const auto truthExact = dynslam::core::readTum(exact + "/groundtruth.tum");
+  const auto truthOff = dynslam::core::readTum(off + "/groundtruth.tum");
+  ASSERT_EQ(truthOff.size() + 1, truthExact.size());
+  EXPECT_NEAR(truthOff.front().t, framesOff[1].t, 1e-6);
+  // Same images: the pixels do not know about the stamps.
+  EXPECT_EQ(readTextFile(exact + "/sim_Images/colour_000005.png"),
+            readTextFile(off + "/sim_Images/colour_000005.png"));
+  const std::string calibration = readTextFile(off + "/calibration.txt");
+  EXPECT_NE(calibration.find("time_offset_s 0.02"), std::string::npos) << calibration;
+  EXPECT_TRUE(std::regex_search(calibration, std::regex("rotation_error_deg (2|1\\.99999)")))
+      << calibration;
+}
+
 TEST(DynslamSim, UnknownKeyIsAnErrorNamingIt) {
   const std::string out = dynslam::testing::scratchDir("run");
   const std::string ini = dynslam::testing::sourceDir() + "/params/sim/static.ini";

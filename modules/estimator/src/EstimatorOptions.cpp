@@ -1,11 +1,19 @@
 #include "dynslam/estimator/EstimatorStage.h"
 
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
 namespace dynslam::estimator {
 namespace {
 
 constexpr core::Keyword<DynamicHandling> kHandlings[] = {{"none", DynamicHandling::None},
                                                          {"remove", DynamicHandling::Remove},
                                                          {"full", DynamicHandling::Full}};
+constexpr core::Keyword<ExtrinsicEstimation> kExtrinsicModes[] = {
+    {"none", ExtrinsicEstimation::None},
+    {"rotation", ExtrinsicEstimation::Rotation},
+    {"full", ExtrinsicEstimation::Full}};
 
 }  // namespace
 
@@ -15,6 +23,79 @@ void EstimatorOptions::describe(core::OptionVisitor& v) {
   describeImu(v);
   describeDynamics(v);
   describeGnss(v);
+  describeCalibration(v);
+}
+
+void EstimatorOptions::describeCalibration(core::OptionVisitor& v) {
+  using core::Range;
+  auto& c = window.calibration;
+  v.key("estimate_time_offset", c.estimate_time_offset,
+        "estimate the camera-IMU time offset t_d online once the IMU is initialized "
+        "(VINS-Fusion's estimate_td); not yet reliable: the estimate stays near its start "
+        "(docs/benchmarks.md)");
+  v.key("time_offset", c.time_offset_s, Range::closed(-0.2, 0.2),
+        "s; camera-IMU time offset t_d, t_imu = t_camera + t_d (VINS-Fusion's td): the value "
+        "used when not estimated, the start and the prior's mean when estimated");
+  v.key("time_offset_sigma", c.time_offset_sigma_s, Range::above(0),
+        "s; the prior's sigma on t_d (estimate_time_offset)");
+  v.key("estimate_extrinsic", c.estimate_extrinsic, kExtrinsicModes,
+        "none: the camera-IMU extrinsic as configured; rotation: its rotation estimated online "
+        "once the IMU is initialized, translation held; full: both (VINS-Fusion's "
+        "estimate_extrinsic); not yet reliable (docs/benchmarks.md)");
+  v.key("extrinsic_sigma_rotation_deg", c.extrinsic_sigma_rotation_deg, Range::above(0),
+        "deg; the prior's sigma on the extrinsic rotation (estimate_extrinsic)");
+  v.key("extrinsic_sigma_translation", c.extrinsic_sigma_translation_m, Range::above(0),
+        "m; the prior's sigma on the extrinsic translation (estimate_extrinsic = full)");
+  v.key("camera_in_imu", camera_in_imu,
+        "the colour camera in the IMU frame, 16 numbers: a row-major 4x4 (Kalibr's T_imu_cam, "
+        "VINS-Fusion's body_T_cam0); the configured extrinsic instead of the rawlog's sensor "
+        "poses (empty: the rawlog's)");
+  const CalibrationParams defaults;
+  const std::string needed = "estimate_time_offset = true";
+  v.requires("time_offset_sigma", c.time_offset_sigma_s != defaults.time_offset_sigma_s, needed,
+             c.estimate_time_offset);
+  const bool extrinsic = c.estimate_extrinsic != ExtrinsicEstimation::None;
+  v.requires("extrinsic_sigma_rotation_deg",
+             c.extrinsic_sigma_rotation_deg != defaults.extrinsic_sigma_rotation_deg,
+             "estimate_extrinsic = rotation or full", extrinsic);
+  v.requires("extrinsic_sigma_translation",
+             c.extrinsic_sigma_translation_m != defaults.extrinsic_sigma_translation_m,
+             "estimate_extrinsic = full", c.estimate_extrinsic == ExtrinsicEstimation::Full);
+}
+
+Eigen::Isometry3d parseCameraInImu(const std::string& text, const std::string& key) {
+  std::istringstream in(text);
+  std::vector<double> values;
+  std::string token;
+  while (in >> token) {
+    try {
+      std::size_t used = 0;
+      values.push_back(std::stod(token, &used));
+      if (used != token.size()) throw std::invalid_argument(token);
+    } catch (const std::exception&) {
+      throw std::invalid_argument(key + ": '" + token + "' is not a number");
+    }
+  }
+  if (values.size() != 16)
+    throw std::invalid_argument(key + ": expected 16 numbers (a row-major 4x4), got " +
+                                std::to_string(values.size()));
+  const Eigen::Matrix4d M =
+      Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(values.data());
+  if (!M.allFinite() || (M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9)
+    throw std::invalid_argument(key + ": the last row must be 0 0 0 1");
+  const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
+  const double offOrthonormal =
+      (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (offOrthonormal > 1e-6 || R.determinant() < 0)
+    throw std::invalid_argument(key +
+                                ": the rotation is not orthonormal with determinant +1 "
+                                "(R^T R differs from I by " +
+                                std::to_string(offOrthonormal) + ", det " +
+                                std::to_string(R.determinant()) + ")");
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(R).normalized().toRotationMatrix();
+  T.translation() = M.topRightCorner<3, 1>();
+  return T;
 }
 
 void EstimatorOptions::describeWindow(core::OptionVisitor& v) {
@@ -90,8 +171,7 @@ void EstimatorOptions::describeImu(core::OptionVisitor& v) {
   v.key("gravity", imu_init.gravity_magnitude, positive, "m/s^2; local gravity");
   v.key("init_min_acceleration_rms", imu_init.min_acceleration_rms, Range::atLeast(0),
         "m/s^2; IMU initialization waits for this much motion (0: still starts accepted)");
-  v.key("max_speed", max_speed, positive,
-        "m/s; a faster estimate is a failure (window restarted)");
+  v.key("max_speed", max_speed, positive, "m/s; a faster estimate is a failure (window restarted)");
   v.key("max_gyro_bias", max_gyro_bias, positive,
         "rad/s; a larger gyro bias estimate is a failure");
   v.key("max_acc_bias", max_acc_bias, positive,
@@ -146,8 +226,8 @@ void EstimatorOptions::describeGnss(core::OptionVisitor& v) {
              use_gnss);
   v.requires("gnss_vertical_factor", gnss.vertical_factor != receiver.vertical_factor, needed,
              use_gnss);
-  v.requires("gnss_align_span", gnss.alignment.min_span_m != receiver.alignment.min_span_m,
-             needed, use_gnss);
+  v.requires("gnss_align_span", gnss.alignment.min_span_m != receiver.alignment.min_span_m, needed,
+             use_gnss);
   v.requires("gnss_lever_arm_x", arm.x() != factor.gnss_lever_arm.x(), needed, use_gnss);
   v.requires("gnss_lever_arm_y", arm.y() != factor.gnss_lever_arm.y(), needed, use_gnss);
   v.requires("gnss_lever_arm_z", arm.z() != factor.gnss_lever_arm.z(), needed, use_gnss);

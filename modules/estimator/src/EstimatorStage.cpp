@@ -6,6 +6,7 @@
 #include <dynslam/core/Median.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace dynslam::estimator {
@@ -15,7 +16,14 @@ EstimatorStage::~EstimatorStage() = default;
 
 void EstimatorStage::configure(const core::IniConfig& cfg, const std::string& section) {
   core::loadOptionsStrict(options_, cfg, section);
+  camera_in_imu_.reset();
+  if (!options_.camera_in_imu.empty())
+    camera_in_imu_ = parseCameraInImu(options_.camera_in_imu, "[" + section + "] camera_in_imu");
   selector_ = KeyframeSelector(options_.keyframes);
+}
+
+Eigen::Isometry3d EstimatorStage::configuredExtrinsic(const core::Frame& frame) const {
+  return camera_in_imu_ ? *camera_in_imu_ : frame.T_body_imu.inverse() * frame.T_body_camera;
 }
 
 void EstimatorStage::startWindow(const core::Frame& frame) {
@@ -26,8 +34,12 @@ void EstimatorStage::startWindow(const core::Frame& frame) {
   SlidingWindowParams params = options_.window;
   params.use_imu = false;  // until the IMU initialization succeeds, which finds the gravity
   params.gravity = Eigen::Vector3d(0, 0, -options_.imu_init.gravity_magnitude);
-  window_ = std::make_unique<SlidingWindow>(params, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
-                                            frame.T_body_imu.inverse() * frame.T_body_camera);
+  extrinsic_prior_ = configuredExtrinsic(frame);
+  auto window = std::make_unique<SlidingWindow>(params, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
+                                                extrinsic_prior_);
+  // A restart goes on from the calibration estimated so far.
+  if (window_) window->continueCalibration(window_->extrinsic(), window_->timeOffset());
+  window_ = std::move(window);
   selector_ = KeyframeSelector(options_.keyframes);
 }
 
@@ -40,8 +52,8 @@ Eigen::Isometry3d EstimatorStage::predictBody(double t, Eigen::Vector3d* velocit
       Eigen::Vector3d p, v;
       Eigen::Quaterniond q;
       pre->predict(T.translation(), Eigen::Quaterniond(T.rotation()), window_->latestVelocity(),
-                   window_->latestAccBias(), window_->latestGyroBias(), window_->gravity(),
-                   p, q, v);
+                   window_->latestAccBias(), window_->latestGyroBias(), window_->gravity(), p, q,
+                   v);
       Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
       out.linear() = q.toRotationMatrix();
       out.translation() = p;
@@ -81,23 +93,23 @@ void EstimatorStage::tryImuInitialization(double t) {
   if (!init.success) {
     if (init.reason != last_init_failure_)
       MRPT_LOG_INFO_STREAM("IMU initialization at t = " << t - first_t_
-                                                           << " s refused: " << init.reason);
+                                                        << " s refused: " << init.reason);
     last_init_failure_ = init.reason;
     return;
   }
   window_->switchToImu(init);
   imu_initialized_at_ = t - first_t_;
   MRPT_LOG_INFO_STREAM("IMU initialized at t = " << imu_initialized_at_ << " s: gyro bias "
-                                                  << init.gyro_bias.transpose() << " rad/s, "
-                                                  << "alignment residual " << init.position_rms
-                                                  << " m");
+                                                 << init.gyro_bias.transpose() << " rad/s, "
+                                                 << "alignment residual " << init.position_rms
+                                                 << " m");
 }
 
 void EstimatorStage::process(core::Frame& frame) {
   if (frames_++ == 0) first_t_ = frame.t;
   takeSensorData(frame);
   RoutedFeatures routed = routeFrameFeatures(frame);
-  const Eigen::Isometry3d T_ic = frame.T_body_imu.inverse() * frame.T_body_camera;
+  const Eigen::Isometry3d T_ic = window_ ? window_->extrinsic() : configuredExtrinsic(frame);
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Isometry3d T_wb = trackBody(frame, routed.pixels, T_ic, velocity);
   KeyframeOutcome keyframe;
@@ -123,9 +135,10 @@ void EstimatorStage::takeSensorData(const core::Frame& frame) {
 RoutedFeatures EstimatorStage::routeFrameFeatures(const core::Frame& frame) {
   const bool objectFactors =
       !(options_.object_factors_wait_for_imu && imu_ && !(window_ && window_->usesImu()));
-  RoutedFeatures routed = routeFeatures(frame.features, options_.dynamic_handling,
-                                        objectFactors && options_.nonrigid_factors,
-                                        objectFactors && options_.rigid_factors);
+  RoutedFeatures routed = routeFeatures(
+      frame.features, options_.dynamic_handling, objectFactors && options_.nonrigid_factors,
+      objectFactors && options_.rigid_factors,
+      window_ ? window_->timeOffset() : options_.window.calibration.time_offset_s);
   if (window_ && options_.drop_moving_landmarks)
     landmarks_dropped_ += window_->dropLandmarks(routed.not_landmarks);
   return routed;
@@ -210,7 +223,7 @@ EstimatorStage::KeyframeOutcome EstimatorStage::makeKeyframe(core::Frame& frame,
     if (window_->usesImu()) T_wb = window_->latestPose();
   } else {
     MRPT_LOG_WARN_STREAM("frame " << frame.index << ": solve failed (" << report.message
-                                   << "), window restarted");
+                                  << "), window restarted");
     restartWindow(frame, in, T_wb, routed.pixels);
     outcome.restarted = true;
   }
@@ -221,6 +234,11 @@ EstimatorStage::KeyframeOutcome EstimatorStage::makeKeyframe(core::Frame& frame,
     record.acc_bias = window_->latestAccBias();
     record.gyro_bias = window_->latestGyroBias();
   }
+  record.time_offset = window_->timeOffset();
+  const Eigen::Isometry3d change = extrinsic_prior_.inverse() * window_->extrinsic();
+  record.extrinsic_rotation_change = logSO3(change.rotation());
+  record.extrinsic_translation_change =
+      window_->extrinsic().translation() - extrinsic_prior_.translation();
   frame.keyframe = record;
   return outcome;
 }
@@ -240,12 +258,16 @@ KeyframeInput EstimatorStage::keyframeInput(const core::Frame& frame, RoutedFeat
     if (const auto f = followed.find(object.object_id); f != followed.end())
       object.first_pose_guess = f->second;
   in.rigid_objects = std::move(routed.rigid_objects);
+  for (auto s = frame.imu.rbegin(); s != frame.imu.rend(); ++s)
+    if (s->has_gyro) {
+      in.angular_velocity =
+          s->gyro - (window_->empty() ? Eigen::Vector3d::Zero() : window_->latestGyroBias());
+      break;
+    }
   if (imu_)
-    in.preintegration = imu_->cutAt(frame.t,
-                                    window_->empty() ? Eigen::Vector3d::Zero()
-                                                     : window_->latestAccBias(),
-                                    window_->empty() ? Eigen::Vector3d::Zero()
-                                                     : window_->latestGyroBias());
+    in.preintegration =
+        imu_->cutAt(frame.t, window_->empty() ? Eigen::Vector3d::Zero() : window_->latestAccBias(),
+                    window_->empty() ? Eigen::Vector3d::Zero() : window_->latestGyroBias());
   return in;
 }
 
@@ -310,6 +332,17 @@ void EstimatorStage::anchorToGnss(double t) {
 }
 
 void EstimatorStage::finish() {
+  if (window_) {
+    final_calibration_ = window_->calibration(true);
+    MRPT_LOG_INFO_STREAM(
+        "calibration: time offset "
+        << 1e3 * final_calibration_.time_offset_s << " ms (sigma "
+        << 1e3 * final_calibration_.time_offset_sigma_s << " ms), extrinsic rotation change "
+        << logSO3((extrinsic_prior_.inverse() * final_calibration_.T_body_camera).rotation())
+                   .norm() *
+               180 / M_PI
+        << " deg");
+  }
   MRPT_LOG_INFO_STREAM(
       frames_ << " frames, " << keyframes_ << " keyframes, solve median "
               << core::upperMedian(solve_ms_) << " ms, " << pnp_failures_
@@ -320,7 +353,7 @@ void EstimatorStage::finish() {
 }
 
 std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
-  return {
+  std::vector<std::pair<std::string, double>> out = {
       {"keyframes", double(keyframes_)},
       {"solve_ms_median", core::upperMedian(solve_ms_)},
       {"solve_ms_max",
@@ -337,6 +370,32 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
       {"gnss_aligned_at", gnss_aligned_at_},
       {"gnss_alignment_rms", gnss_ && gnss_->aligned() ? gnss_->alignment().rmsResidual() : 0.0},
       {"gnss_factors", double(gnss_factors_)}};
+  appendCalibration(out);
+  return out;
+}
+
+void EstimatorStage::appendCalibration(std::vector<std::pair<std::string, double>>& out) const {
+  const CalibrationEstimate& c = final_calibration_;
+  const auto sigmaOr = [](double sigma) { return std::isfinite(sigma) ? sigma : -1.0; };
+  const Eigen::Isometry3d T = window_ ? c.T_body_camera : extrinsic_prior_;
+  const Eigen::Isometry3d change = extrinsic_prior_.inverse() * T;
+  // Roll, pitch, yaw (deg) of R = Rz(yaw) Ry(pitch) Rx(roll), the camera's axes in the IMU's.
+  const Eigen::Vector3d ypr = T.rotation().eulerAngles(2, 1, 0) * 180 / M_PI;
+  constexpr double kDeg = 180 / M_PI;
+  out.insert(
+      out.end(),
+      {{"time_offset_s", window_ ? c.time_offset_s : options_.window.calibration.time_offset_s},
+       {"time_offset_sigma_s", sigmaOr(c.time_offset_sigma_s)},
+       {"extrinsic_x", T.translation().x()},
+       {"extrinsic_y", T.translation().y()},
+       {"extrinsic_z", T.translation().z()},
+       {"extrinsic_roll_deg", ypr(2)},
+       {"extrinsic_pitch_deg", ypr(1)},
+       {"extrinsic_yaw_deg", ypr(0)},
+       {"extrinsic_rotation_change_deg", logSO3(change.rotation()).norm() * kDeg},
+       {"extrinsic_translation_change_m", change.translation().norm()},
+       {"extrinsic_sigma_rotation_deg", sigmaOr(c.extrinsic_sigma.tail<3>().maxCoeff() * kDeg)},
+       {"extrinsic_sigma_translation_m", sigmaOr(c.extrinsic_sigma.head<3>().maxCoeff())}});
 }
 
 }  // namespace dynslam::estimator

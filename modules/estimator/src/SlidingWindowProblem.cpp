@@ -5,6 +5,7 @@
 
 #include "dynslam/estimator/Marginalizer.h"
 #include "dynslam/estimator/StateBlocks.h"
+#include "dynslam/estimator/factors/CalibrationPriorFactor.h"
 #include "dynslam/estimator/factors/GnssPositionFactor.h"
 #include "dynslam/estimator/factors/GyroRotationFactor.h"
 #include "dynslam/estimator/factors/ImuFactor.h"
@@ -18,7 +19,9 @@
 
 #include <ceres/ceres.h>
 
+#include <cmath>
 #include <functional>
+#include <memory>
 #include <set>
 
 namespace dynslam::estimator {
@@ -81,6 +84,7 @@ class SlidingWindow::ProblemBuilder {
                                                   k.gnss->covariance),
              &gnss_huber_, {k.pose});
     if (w_.prior_.factor) sink(w_.prior_.factor, nullptr, w_.prior_.blocks);
+    if (only < 0) calibrationPriors(sink);
     return landmarks;
   }
 
@@ -93,7 +97,9 @@ class SlidingWindow::ProblemBuilder {
       if (w_.params_.use_imu) problem.AddParameterBlock(k.speed_bias, 9);
     }
     problem.AddParameterBlock(w_.extrinsic_, 7, &manifold);
-    problem.SetParameterBlockConstant(w_.extrinsic_);
+    if (!w_.estimatesExtrinsic()) problem.SetParameterBlockConstant(w_.extrinsic_);
+    problem.AddParameterBlock(w_.time_offset_, 1);
+    if (!w_.estimatesTimeOffset()) problem.SetParameterBlockConstant(w_.time_offset_);
     std::set<const double*> objectPoses;  // pose blocks too: they need the manifold
     for (auto& [id, o] : w_.objects_.all())
       for (auto& [kf, L] : o.poses) objectPoses.insert(L.data());
@@ -127,6 +133,32 @@ class SlidingWindow::ProblemBuilder {
   }
 
  private:
+  /// The priors of the calibration states the window estimates (never marginalised).
+  void calibrationPriors(const FactorSink& sink) {
+    const CalibrationParams& c = w_.params_.calibration;
+    // While settling (SlidingWindow.cpp), held near where they are by tight priors.
+    const bool settling = w_.calibrationSettling();
+    constexpr double kSettlingTimeSigma = 1e-4, kSettlingRotationSigma = 1e-4;
+    if (w_.estimatesTimeOffset())
+      sink(std::make_shared<TimeOffsetPriorFactor>(
+               settling ? w_.time_offset_[0] : c.time_offset_s,
+               settling ? kSettlingTimeSigma : c.time_offset_sigma_s),
+           nullptr, {w_.time_offset_});
+    if (w_.estimatesExtrinsic()) {
+      // rotation: the translation is held by a prior a hundred times tighter than a millimetre
+      // error could matter (one block, one manifold for both modes).
+      constexpr double kHeldTranslationSigma = 1e-5;
+      const double sigmaP = c.estimate_extrinsic == ExtrinsicEstimation::Full
+                                ? c.extrinsic_sigma_translation_m
+                                : kHeldTranslationSigma;
+      sink(std::make_shared<ExtrinsicPriorFactor>(
+               settling ? w_.extrinsic() : w_.extrinsic_prior_,
+               settling ? kHeldTranslationSigma : sigmaP,
+               settling ? kSettlingRotationSigma : c.extrinsic_sigma_rotation_deg * M_PI / 180),
+           nullptr, {w_.extrinsic_});
+    }
+  }
+
   /// r_D for one non-rigid point seen in at least two keyframes: the constant-velocity
   /// reprojection and the measured depth in each. With `only`, the point's factors when it was
   /// first seen in that keyframe (it is marginalised with it), none otherwise.
@@ -148,8 +180,8 @@ class SlidingWindow::ProblemBuilder {
                                                             w_.params_.pixel_sigma),
            &huber_, {k->pose, w_.extrinsic_, p.position, p.velocity});
       if (obs->depth > 0)
-        sink(std::make_shared<NonRigidDepthFactor>(dt, obs->depth, w_.params_.depth_noise),
-             &huber_, {k->pose, w_.extrinsic_, p.position, p.velocity});
+        sink(std::make_shared<NonRigidDepthFactor>(dt, obs->depth, w_.params_.depth_noise), &huber_,
+             {k->pose, w_.extrinsic_, p.position, p.velocity});
     }
     return 1;
   }
@@ -197,6 +229,7 @@ class SlidingWindow::ProblemBuilder {
     if (!anchor) return 0;
     const bool touchesOnly = only < 0 || only == l.anchor;
     const LandmarkObservation& a = l.anchorObservation();
+    const Eigen::Vector2d anchorPixel = w_.atStateTime(a.pixel, a.velocity);
     const Eigen::Vector3d world = w_.landmarkWorld(l);
     int used = 0;
     for (auto& [kf, obs] : l.observations) {
@@ -206,18 +239,21 @@ class SlidingWindow::ProblemBuilder {
       if (w_.depthIn(*k, world) < kMinLandmarkDepth) continue;
       ++used;
       if (!touchesOnly && only != kf) continue;
-      sink(std::make_shared<StaticReprojectionFactor>(w_.camera_, a.pixel, obs.pixel,
-                                                      w_.params_.pixel_sigma),
-           &huber_, {anchor->pose, k->pose, w_.extrinsic_, &l.inverse_depth});
+      sink(std::make_shared<StaticReprojectionFactor>(
+               w_.camera_, a.pixel, obs.pixel, w_.params_.pixel_sigma, a.velocity, obs.velocity),
+           &huber_, {anchor->pose, k->pose, w_.extrinsic_, &l.inverse_depth, w_.time_offset_});
       if (w_.params_.transferred_depth && obs.depth > 0)
-        sink(std::make_shared<TransferredDepthFactor>(w_.camera_, a.pixel, obs.depth,
-                                                      w_.params_.depth_noise),
+        sink(std::make_shared<TransferredDepthFactor>(
+                 w_.camera_, anchorPixel,
+                 w_.depthAtStateTime(*k, w_.atStateTime(obs.pixel, obs.velocity), obs.depth),
+                 w_.params_.depth_noise),
              &huber_, {anchor->pose, k->pose, w_.extrinsic_, &l.inverse_depth});
     }
     if (used == 0) return 0;
     if (a.depth > 0 && touchesOnly)
-      sink(std::make_shared<DepthMeasurementFactor>(a.depth, w_.params_.depth_noise), &huber_,
-           {&l.inverse_depth});
+      sink(std::make_shared<DepthMeasurementFactor>(
+               w_.depthAtStateTime(*anchor, anchorPixel, a.depth), w_.params_.depth_noise),
+           &huber_, {&l.inverse_depth});
     return 1;
   }
 
@@ -235,14 +271,20 @@ void SlidingWindow::repropagatePreintegrations() {
   }
 }
 
-SolveReport SlidingWindow::solve() {
-  // Bias estimates that moved far from a preintegration's linearisation point: integrate again.
-  if (params_.use_imu) repropagatePreintegrations();
+/// The window's problems own nothing: the factors are shared with the marginalisation and the
+/// losses and the manifold live in the builder and the caller.
+static ceres::Problem::Options unownedProblemOptions() {
   ceres::Problem::Options options;
   options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(options);
+  return options;
+}
+
+SolveReport SlidingWindow::solve() {
+  // Bias estimates that moved far from a preintegration's linearisation point: integrate again.
+  if (params_.use_imu) repropagatePreintegrations();
+  ceres::Problem problem(unownedProblemOptions());
   PoseManifold manifold;
   std::vector<std::shared_ptr<const ceres::CostFunction>> keep;  // alive until Solve returns
   ProblemBuilder builder(*this);
@@ -272,7 +314,11 @@ void SlidingWindow::marginalizeOldest() {
   Keyframe& oldest = keyframes_.front();
   Marginalizer marginalizer;
   for (auto& k : keyframes_) marginalizer.setPoseBlock(k.pose);
-  marginalizer.setConstantBlock(extrinsic_);
+  if (estimatesExtrinsic())
+    marginalizer.setPoseBlock(extrinsic_);
+  else
+    marginalizer.setConstantBlock(extrinsic_);
+  if (!estimatesTimeOffset()) marginalizer.setConstantBlock(time_offset_);
   // The first marginalisation: the solves held the oldest pose fixed (the gauge), so the prior
   // is conditioned on it rather than eliminating it; otherwise the prior would carry no absolute
   // information and the window would drift in the unobservable directions (VINS-Fusion instead
@@ -280,11 +326,10 @@ void SlidingWindow::marginalizeOldest() {
   if (!prior_.factor) marginalizer.setConstantBlock(oldest.pose);
   ProblemBuilder builder(*this);
   std::set<const double*> leaving = {oldest.pose, oldest.speed_bias};
-  builder.forEachFactor(oldest.id, [&](std::shared_ptr<const ceres::CostFunction> f,
-                                       const ceres::LossFunction* loss,
-                                       std::vector<double*> blocks) {
-    marginalizer.addFactor(std::move(f), loss, blocks);
-  });
+  builder.forEachFactor(
+      oldest.id,
+      [&](std::shared_ptr<const ceres::CostFunction> f, const ceres::LossFunction* loss,
+          std::vector<double*> blocks) { marginalizer.addFactor(std::move(f), loss, blocks); });
   for (auto& [id, l] : landmarks_.all())
     if (l.anchor == oldest.id) leaving.insert(&l.inverse_depth);
   for (auto& [id, p] : nonrigid_)
@@ -308,6 +353,49 @@ void SlidingWindow::marginalizeOldest() {
   for (auto it = nonrigid_.begin(); it != nonrigid_.end();)
     it = it->second.observations.begin()->first == oldest.id ? nonrigid_.erase(it) : std::next(it);
   keyframes_.pop_front();
+}
+
+}  // namespace dynslam::estimator
+
+namespace dynslam::estimator {
+
+CalibrationEstimate SlidingWindow::calibration(bool with_sigma) {
+  CalibrationEstimate out;
+  out.time_offset_s = time_offset_[0];
+  out.T_body_camera = extrinsic();
+  const bool td = estimatesTimeOffset(), extrinsic = estimatesExtrinsic();
+  if (!with_sigma || keyframes_.size() < 2 || !(td || extrinsic)) return out;
+  ceres::Problem problem(unownedProblemOptions());
+  PoseManifold manifold;
+  std::vector<std::shared_ptr<const ceres::CostFunction>> keep;
+  ProblemBuilder builder(*this);
+  builder.fill(problem, manifold, keep);
+  std::vector<std::pair<const double*, const double*>> blocks;
+  if (td) blocks.emplace_back(time_offset_, time_offset_);
+  if (extrinsic) blocks.emplace_back(extrinsic_, extrinsic_);
+  // Sparse QR; when the window's information is rank-deficient (a landmark along its ray with
+  // no depth), a dense SVD's pseudo-inverse still gives the calibration blocks.
+  ceres::Covariance::Options sparse;
+  ceres::Covariance::Options dense;
+  dense.algorithm_type = ceres::DENSE_SVD;
+  dense.null_space_rank = -1;
+  auto covariancePtr = std::make_unique<ceres::Covariance>(sparse);
+  if (!covariancePtr->Compute(blocks, &problem)) {
+    covariancePtr = std::make_unique<ceres::Covariance>(dense);
+    if (!covariancePtr->Compute(blocks, &problem)) return out;
+  }
+  ceres::Covariance& covariance = *covariancePtr;
+  if (td) {
+    double variance = 0;
+    covariance.GetCovarianceBlock(time_offset_, time_offset_, &variance);
+    out.time_offset_sigma_s = std::sqrt(std::max(variance, 0.0));
+  }
+  if (extrinsic) {
+    Eigen::Matrix<double, 6, 6, Eigen::RowMajor> C;
+    covariance.GetCovarianceBlockInTangentSpace(extrinsic_, extrinsic_, C.data());
+    out.extrinsic_sigma = C.diagonal().cwiseMax(0.0).cwiseSqrt();
+  }
+  return out;
 }
 
 }  // namespace dynslam::estimator

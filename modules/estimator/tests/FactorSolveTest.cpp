@@ -61,6 +61,9 @@ TEST(FactorSolve, StaticFeaturesWithDepthRecoverTheSecondKeyframeAndTheInverseDe
   problem.AddParameterBlock(extrinsic.data(), kPoseSize, new PoseManifold);
   problem.SetParameterBlockConstant(pose_i.data());  // the gauge
   problem.SetParameterBlockConstant(extrinsic.data());
+  double timeOffset = 0.0;  // no offset, held
+  problem.AddParameterBlock(&timeOffset, 1);
+  problem.SetParameterBlockConstant(&timeOffset);
 
   std::vector<std::array<double, 1>> lambdas;
   std::vector<double> trueLambdas;
@@ -74,7 +77,8 @@ TEST(FactorSolve, StaticFeaturesWithDepthRecoverTheSecondKeyframeAndTheInverseDe
     double* lambda = lambdas.back().data();
     problem.AddResidualBlock(
         new StaticReprojectionFactor(cam, cam.project(p_ci), cam.project(p_cj), 1.5),
-        new ceres::HuberLoss(1.0), pose_i.data(), pose_j.data(), extrinsic.data(), lambda);
+        new ceres::HuberLoss(1.0), pose_i.data(), pose_j.data(), extrinsic.data(), lambda,
+        &timeOffset);
     problem.AddResidualBlock(new DepthMeasurementFactor(p_ci.z()), nullptr, lambda);
     problem.SetParameterLowerBound(lambda, 0, 1e-3);
   }

@@ -29,8 +29,7 @@ struct RoomPath {
     return {0.36 * std::cos(1.2 * t), 0.136 * std::cos(1.7 * t), 0.225 * std::cos(0.9 * t)};
   }
   static Eigen::Vector3d acceleration(double t) {
-    return {-0.432 * std::sin(1.2 * t), -0.2312 * std::sin(1.7 * t),
-            -0.2025 * std::sin(0.9 * t)};
+    return {-0.432 * std::sin(1.2 * t), -0.2312 * std::sin(1.7 * t), -0.2025 * std::sin(0.9 * t)};
   }
   static Eigen::Vector3d axis() { return Eigen::Vector3d(0.2, 1.0, 0.1).normalized(); }
   static double angle(double t) { return 0.18 * std::sin(1.1 * t); }
@@ -53,6 +52,24 @@ struct RoomPath {
   }
 };
 
+/// A path along which the camera-IMU time offset and the extrinsic rotation are unobservable:
+/// constant velocity, no rotation.
+struct StraightPath {
+  static Eigen::Vector3d velocity(double) { return {0.3, 0.0, 0.05}; }
+  static Eigen::Isometry3d pose(double t) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = t * velocity(t);
+    return T;
+  }
+  static core::ImuSample imuAt(double t) {
+    core::ImuSample s;
+    s.t = t;
+    s.acc = Eigen::Vector3d(0, -9.81, 0);
+    s.has_gyro = s.has_acc = true;
+    return s;
+  }
+};
+
 struct SyntheticFramesOptions {
   double fps = 30;
   double imu_rate = 200;
@@ -62,6 +79,10 @@ struct SyntheticFramesOptions {
   unsigned seed = 7;
   bool walker = false;  ///< points on a box walking across the view at 0.6 m/s
   core::FeatureClass walker_class = core::FeatureClass::NonRigid;
+  /// s; the images are taken this long after their stamps (t_imu = t_camera + offset, the
+  /// estimator's t_d); the features carry their image velocity over the last frame interval.
+  double time_offset = 0;
+  bool straight = false;  ///< StraightPath instead of RoomPath
 };
 
 class SyntheticFrames {
@@ -85,7 +106,11 @@ class SyntheticFrames {
   }
 
   double time(std::size_t index) const { return double(index) / options_.fps; }
-  Eigen::Isometry3d truth(std::size_t index) const { return RoomPath::pose(time(index)); }
+  /// The body pose at frame `index`'s stamp (on the IMU clock).
+  Eigen::Isometry3d truth(std::size_t index) const { return poseAt(time(index)); }
+  Eigen::Isometry3d poseAt(double t) const {
+    return options_.straight ? StraightPath::pose(t) : RoomPath::pose(t);
+  }
 
   /// Frame `index` (call in order: the noise comes from one stream), with the IMU samples since
   /// the previous frame and the features it sees.
@@ -96,15 +121,21 @@ class SyntheticFrames {
     f.intrinsics = camera_;
     if (options_.imu)  // the samples in (previous frame's t, t]
       for (long k = index == 0 ? 0 : lastSample(index - 1) + 1; k <= lastSample(index); ++k)
-        f.imu.push_back(RoomPath::imuAt(double(k) / options_.imu_rate));
-    const Eigen::Isometry3d T_camera_world = truth(index).inverse();
+        f.imu.push_back(options_.straight ? StraightPath::imuAt(double(k) / options_.imu_rate)
+                                          : RoomPath::imuAt(double(k) / options_.imu_rate));
+    // Taken at t + offset; the velocity as a tracker measures it, from the frame before.
+    const double taken = f.t + options_.time_offset;
+    const Eigen::Isometry3d T_camera_world = poseAt(taken).inverse();
+    const Eigen::Isometry3d T_previous_world = poseAt(taken - 1.0 / options_.fps).inverse();
     for (std::size_t i = 0; i < points_.size(); ++i)
-      see(T_camera_world * points_[i], std::int64_t(i), core::FeatureClass::Static, -1, f);
+      see(T_camera_world * points_[i], T_previous_world * points_[i], std::int64_t(i),
+          core::FeatureClass::Static, -1, f);
     if (options_.walker) {
-      const Eigen::Vector3d centre(-1.2 + 0.6 * f.t, 0.1, 2.0);
+      const auto centre = [](double t) { return Eigen::Vector3d(-1.2 + 0.6 * t, 0.1, 2.0); };
       for (std::size_t i = 0; i < walker_.size(); ++i)
-        see(T_camera_world * (centre + walker_[i]), kWalkerFirstId + std::int64_t(i),
-            options_.walker_class, 1, f);
+        see(T_camera_world * (centre(taken) + walker_[i]),
+            T_previous_world * (centre(taken - 1.0 / options_.fps) + walker_[i]),
+            kWalkerFirstId + std::int64_t(i), options_.walker_class, 1, f);
     }
     return f;
   }
@@ -113,11 +144,14 @@ class SyntheticFrames {
   long lastSample(std::size_t index) const {
     return long(std::floor(time(index) * options_.imu_rate + 1e-9));
   }
-  void see(const Eigen::Vector3d& p, std::int64_t id, core::FeatureClass cls, int object,
-           core::Frame& f) {
-    if (p.z() < 0.3) return;
+  /// `p` in the camera now, `before` one frame interval earlier (the image velocity).
+  void see(const Eigen::Vector3d& p, const Eigen::Vector3d& before, std::int64_t id,
+           core::FeatureClass cls, int object, core::Frame& f) {
+    if (p.z() < 0.3 || before.z() < 0.3) return;
     const double u = camera_.fx * p.x() / p.z() + camera_.cx;
     const double v = camera_.fy * p.y() / p.z() + camera_.cy;
+    const double u0 = camera_.fx * before.x() / before.z() + camera_.cx;
+    const double v0 = camera_.fy * before.y() / before.z() + camera_.cy;
     if (u < 0 || v < 0 || u >= camera_.width || v >= camera_.height) return;
     std::normal_distribution<double> pixel(0, options_.pixel_noise);
     std::normal_distribution<double> depth(0, 0.001 + 0.0015 * p.z() * p.z());
@@ -127,6 +161,7 @@ class SyntheticFrames {
     feature.depth = float(p.z() + depth(rng_));
     feature.feature_class = cls;
     feature.object_id = object;
+    feature.velocity = cv::Point2f(float((u - u0) * options_.fps), float((v - v0) * options_.fps));
     f.features.push_back(feature);
   }
 

@@ -135,6 +135,9 @@ std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
   depthEdge.radius_px = params_.depth_edge_radius_px;
   std::vector<core::Feature> out;
   out.reserve(tracks_.size());
+  // Track::velocity is px per frame interval; features carry px/s.
+  const double interval = frame.t - previous_t_;
+  const float perSecond = interval > 0 && interval < 1.0 ? float(1.0 / interval) : 0.f;
   for (const auto& t : tracks_) {
     core::Feature f;
     f.id = t.id;
@@ -142,6 +145,7 @@ std::vector<core::Feature> FeatureTracker::track(const core::Frame& frame) {
     f.depth = depthAt(frame.depth, t.pixel);
     f.depth_at_edge = nearDepthEdge(frame.depth, t.pixel, depthEdge);  // radius 0: false
     f.track_length = t.length;
+    f.velocity = t.velocity * perSecond;
     out.push_back(f);
   }
   std::swap(previous_pyramid_, pyramid_);

@@ -153,8 +153,10 @@ void ScenarioOptions::load(const core::IniConfig& cfg) {
   core::loadOptionsStrict(gnss, cfg, "Gnss");
   core::loadOptionsStrict(noise, cfg, "Noise");
   core::loadOptionsStrict(augment, cfg, "Augment");
-  core::rejectUnknownSections(
-      cfg, {"Scenario", "Camera", "People", "Cars", "Imu", "Gnss", "Noise", "Augment"});
+  core::loadOptionsStrict(calibration, cfg, "Calibration");
+  calibration.seed = world.seed;
+  core::rejectUnknownSections(cfg, {"Scenario", "Camera", "People", "Cars", "Imu", "Gnss", "Noise",
+                                    "Augment", "Calibration"});
   const auto& scene = world.scene;
   if (people.appearance == "video" && people.sprites.empty())
     throw core::ConfigError("[People] in " + cfg.source() +

@@ -46,13 +46,14 @@ Eigen::Vector3d transferInverseDepthPoint(const Eigen::Isometry3d& T_wbi,
   if (!J) return worldToCamera(T_wbj, T_bc, cameraToWorld(T_wbi, T_bc, p_ci));
   CameraToWorldJacobians in;
   WorldToCameraJacobians out;
-  const Eigen::Vector3d p_cj = worldToCamera(T_wbj, T_bc, cameraToWorld(T_wbi, T_bc, p_ci, &in),
-                                             &out);
+  const Eigen::Vector3d p_cj =
+      worldToCamera(T_wbj, T_bc, cameraToWorld(T_wbi, T_bc, p_ci, &in), &out);
   J->pose_i = out.point * in.body_pose;
   J->pose_j = out.body_pose;
   // The extrinsic enters twice: lifting the point out of camera i and projecting into camera j.
   J->extrinsic = out.extrinsic + out.point * in.extrinsic;
-  J->inverse_depth = out.point * in.point * (-p_ci / inverse_depth);
+  J->bearing = out.point * in.point / inverse_depth;
+  J->inverse_depth = J->bearing * (-p_ci);
   return p_cj;
 }
 

@@ -6,13 +6,14 @@
 
 namespace dynslam::estimator {
 
-StaticReprojectionFactor::StaticReprojectionFactor(const PinholeCamera& camera,
-                                                   const Eigen::Vector2d& pixel_i,
-                                                   const Eigen::Vector2d& pixel_j,
-                                                   double sigma_pixel)
+StaticReprojectionFactor::StaticReprojectionFactor(
+    const PinholeCamera& camera, const Eigen::Vector2d& pixel_i, const Eigen::Vector2d& pixel_j,
+    double sigma_pixel, const Eigen::Vector2d& velocity_i, const Eigen::Vector2d& velocity_j)
     : camera_(camera),
-      bearing_i_(camera.bearing(pixel_i)),
+      pixel_i_(pixel_i),
       pixel_j_(pixel_j),
+      velocity_i_(velocity_i),
+      velocity_j_(velocity_j),
       inv_sigma_(1.0 / sigma_pixel) {}
 
 bool StaticReprojectionFactor::Evaluate(double const* const* parameters, double* residuals,
@@ -22,15 +23,17 @@ bool StaticReprojectionFactor::Evaluate(double const* const* parameters, double*
   const Eigen::Isometry3d T_wbi = poseFromBlock(parameters[0]);
   const Eigen::Isometry3d T_wbj = poseFromBlock(parameters[1]);
   const Eigen::Isometry3d T_bc = poseFromBlock(parameters[2]);
+  const double td = parameters[4][0];
 
   InverseDepthTransferJacobians dp;
-  const Eigen::Vector3d p_cj = transferInverseDepthPoint(T_wbi, T_wbj, T_bc, bearing_i_,
-                                                         inverse_depth, jacobians ? &dp : nullptr);
+  const Eigen::Vector3d p_cj =
+      transferInverseDepthPoint(T_wbi, T_wbj, T_bc, camera_.bearing(pixel_i_ - td * velocity_i_),
+                                inverse_depth, jacobians ? &dp : nullptr);
   if (p_cj.z() < kMinProjectionDepth) return false;
 
   Eigen::Matrix<double, 2, 3> dpixel;
   Eigen::Map<Eigen::Vector2d> r(residuals);
-  r = inv_sigma_ * (pixel_j_ - camera_.project(p_cj, &dpixel));
+  r = inv_sigma_ * (pixel_j_ - td * velocity_j_ - camera_.project(p_cj, &dpixel));
   if (!jacobians) return true;
 
   // r = (u - pi(p)) / sigma: dr/dx = -(1/sigma) dpi/dp dp/dx.
@@ -41,6 +44,13 @@ bool StaticReprojectionFactor::Evaluate(double const* const* parameters, double*
   if (jacobians[3]) {
     Eigen::Map<Eigen::Vector2d> dr_dlambda(jacobians[3]);
     dr_dlambda = dr_dp * dp.inverse_depth;
+  }
+  if (jacobians[4]) {
+    // d bearing(u - td v) / d td = -(v_x / fx, v_y / fy, 0).
+    const Eigen::Vector3d dbearing(-velocity_i_.x() / camera_.fx, -velocity_i_.y() / camera_.fy,
+                                   0.0);
+    Eigen::Map<Eigen::Vector2d> dr_dtd(jacobians[4]);
+    dr_dtd = -inv_sigma_ * velocity_j_ + dr_dp * (dp.bearing * dbearing);
   }
   return true;
 }

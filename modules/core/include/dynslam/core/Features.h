@@ -27,6 +27,9 @@ struct Feature {
   /// method; the front-end still uses it).
   bool depth_at_edge = false;
   int track_length = 1;  ///< frames this corner has been tracked, this one included
+  /// px/s over the last frame interval (a new corner: the frame's median flow, a guess). The
+  /// estimator moves the pixel along it by the camera-IMU time offset (VINS-Fusion's t_d).
+  cv::Point2f velocity{0.f, 0.f};
   FeatureClass feature_class = FeatureClass::Static;
   int object_id = -1;  ///< Track::id of the object whose mask holds it; -1 = background
 };

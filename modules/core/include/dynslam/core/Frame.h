@@ -62,6 +62,11 @@ struct KeyframeRecord {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d acc_bias = Eigen::Vector3d::Zero();
   Eigen::Vector3d gyro_bias = Eigen::Vector3d::Zero();
+  /// The online calibration after the solve: the camera-IMU time offset (s) and the extrinsic's
+  /// change from its configured value (rotation vector, rad; translation, m).
+  double time_offset = 0;
+  Eigen::Vector3d extrinsic_rotation_change = Eigen::Vector3d::Zero();
+  Eigen::Vector3d extrinsic_translation_change = Eigen::Vector3d::Zero();
 };
 
 struct Frame {

@@ -62,6 +62,9 @@ struct EstimatorOptions : core::Options {
   int min_keyframe_features = 15;
   bool use_gnss = false;  ///< GnssAnchor; the lever arm is window.gnss_lever_arm
   GnssAnchorParams gnss;
+  /// The camera in the IMU frame as 16 numbers, a row-major 4x4 (Kalibr's T_imu_cam,
+  /// VINS-Fusion's body_T_cam0); empty: from the rawlog's sensor poses.
+  std::string camera_in_imu;
 
   void describe(core::OptionVisitor& v) override;
 
@@ -71,7 +74,12 @@ struct EstimatorOptions : core::Options {
   void describeImu(core::OptionVisitor& v);
   void describeDynamics(core::OptionVisitor& v);
   void describeGnss(core::OptionVisitor& v);
+  void describeCalibration(core::OptionVisitor& v);
 };
+
+/// camera_in_imu parsed and checked: 16 numbers, the last row 0 0 0 1, a rotation orthonormal
+/// with determinant +1 (within 1e-6). Throws std::invalid_argument naming `key` otherwise.
+Eigen::Isometry3d parseCameraInImu(const std::string& text, const std::string& key);
 
 class EstimatorStage : public core::Stage {
  public:
@@ -87,7 +95,11 @@ class EstimatorStage : public core::Stage {
   /// rigid_objects_per_keyframe (objects with r_O / r_om factors in the solve), imu_gaps,
   /// blind_frames (too few features for a keyframe), landmarks_dropped_moving
   /// (drop_moving_landmarks), gnss_aligned_at (s of stream, -1 never),
-  /// gnss_alignment_rms (m), gnss_factors.
+  /// gnss_alignment_rms (m), gnss_factors; the calibration at the end (CalibrationParams):
+  /// time_offset_s and time_offset_sigma_s, extrinsic_x/y/z (m) and extrinsic_roll/pitch/yaw
+  /// (deg, of T_imu_camera), extrinsic_rotation_change_deg and extrinsic_translation_change_m
+  /// from the configured value, extrinsic_sigma_rotation_deg and
+  /// extrinsic_sigma_translation_m (largest axis); a sigma is -1 when not estimated.
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
@@ -96,9 +108,9 @@ class EstimatorStage : public core::Stage {
   /// What a keyframe is made from besides the routed features.
   struct KeyframeContext {
     KeyframeSelector::Reason reason;
-    int shared = 0;               ///< features shared with the last keyframe
-    Eigen::Isometry3d T_ic;       ///< camera in the body (IMU) frame
-    Eigen::Vector3d velocity;     ///< the prediction's (IMU) or zero
+    int shared = 0;            ///< features shared with the last keyframe
+    Eigen::Isometry3d T_ic;    ///< camera in the body (IMU) frame
+    Eigen::Vector3d velocity;  ///< the prediction's (IMU) or zero
   };
   /// What a keyframe left for the frame's output.
   struct KeyframeOutcome {
@@ -133,6 +145,9 @@ class EstimatorStage : public core::Stage {
                  const KeyframeOutcome& keyframe);
 
   void startWindow(const core::Frame& frame);
+  /// The camera in the IMU frame the window starts from: camera_in_imu, else the frame's
+  /// sensor poses.
+  Eigen::Isometry3d configuredExtrinsic(const core::Frame& frame) const;
   /// The body pose this frame is expected at: IMU propagation from the last keyframe when the
   /// window is visual-inertial, else constant velocity from the last two frames.
   /// `fromImu` (optional): set to whether the IMU propagation gave it.
@@ -140,10 +155,15 @@ class EstimatorStage : public core::Stage {
   void tryImuInitialization(double t);
   /// use_gnss: hands the window the GNSS targets of keyframes whose fixes have arrived.
   void anchorToGnss(double t);
+  /// statistics()'s calibration entries.
+  void appendCalibration(std::vector<std::pair<std::string, double>>& out) const;
   /// A pose change no larger than pnp_max_correction_m / _deg (and finite).
   bool plausibleStep(const Eigen::Isometry3d& step) const;
 
   EstimatorOptions options_;
+  std::optional<Eigen::Isometry3d> camera_in_imu_;  // options_.camera_in_imu, parsed
+  CalibrationEstimate final_calibration_;           // finish(): with standard deviations
+  Eigen::Isometry3d extrinsic_prior_ = Eigen::Isometry3d::Identity();
   std::unique_ptr<SlidingWindow> window_;
   std::unique_ptr<KeyframeImu> imu_;
   std::unique_ptr<GnssAnchor> gnss_;

@@ -23,17 +23,20 @@ namespace dynslam::estimator {
 enum class DynamicHandling { None, Remove, Full };
 
 struct RoutedFeatures {
-  std::vector<FeatureObservation> landmarks;       ///< constrain the camera as static points
-  std::map<std::int64_t, Eigen::Vector2d> pixels;  ///< the landmarks' pixels (keyframes, PnP)
-  std::vector<FeatureObservation> nonrigid;        ///< r_D
-  std::vector<RigidObjectInput> rigid_objects;     ///< r_O / r_om, one entry per object
+  std::vector<FeatureObservation> landmarks;  ///< constrain the camera as static points
+  /// The landmarks' pixels at the state time (moved by the time offset; keyframes, PnP).
+  std::map<std::int64_t, Eigen::Vector2d> pixels;
+  std::vector<FeatureObservation> nonrigid;     ///< r_D
+  std::vector<RigidObjectInput> rigid_objects;  ///< r_O / r_om, one entry per object
   /// Features that are not landmarks this frame (empty with none): those classified as moving,
   /// and with remove the still ones on a detected object. Whatever the window holds of them as
   /// static landmarks was taken from frames in which they were not known to be so.
   std::vector<std::int64_t> not_landmarks;
 };
 
+/// `time_offset_s`: the camera-IMU time offset now (SlidingWindow::timeOffset()), which moves
+/// RoutedFeatures::pixels; the observations keep the measured pixel and its velocity.
 RoutedFeatures routeFeatures(const std::vector<core::Feature>& features, DynamicHandling handling,
-                             bool nonrigid_factors, bool rigid_factors);
+                             bool nonrigid_factors, bool rigid_factors, double time_offset_s = 0.0);
 
 }  // namespace dynslam::estimator

@@ -12,7 +12,8 @@ namespace dynslam::estimator {
 
 struct LandmarkObservation {
   Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
-  double depth = 0;  ///< measured depth at the pixel, m; 0 = none
+  double depth = 0;                                    ///< measured depth at the pixel, m; 0 = none
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  ///< image velocity, px/s (the time offset)
 };
 
 struct Landmark {

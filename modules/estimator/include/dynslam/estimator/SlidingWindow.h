@@ -42,6 +42,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -49,6 +50,33 @@
 #include <vector>
 
 namespace dynslam::estimator {
+
+enum class ExtrinsicEstimation { None, Rotation, Full };
+
+/// Online camera-IMU calibration (VINS-Fusion's estimate_td and estimate_extrinsic): the time
+/// offset t_d (t_imu = t_camera + t_d, StaticReprojectionFactor.h) and the extrinsic
+/// T_body_camera become states of the window once it is visual-inertial, each held near its
+/// configured value by a prior (CalibrationPriorFactor.h). Before the IMU initialization both
+/// stay at their current values: without the IMU neither is observable.
+struct CalibrationParams {
+  bool estimate_time_offset = false;
+  double time_offset_s = 0.0;  ///< the start value and the prior's mean (also when not estimated)
+  double time_offset_sigma_s = 0.02;
+  ExtrinsicEstimation estimate_extrinsic = ExtrinsicEstimation::None;
+  double extrinsic_sigma_translation_m = 0.02;
+  double extrinsic_sigma_rotation_deg = 3.0;
+};
+
+/// What the window's calibration states hold, and their standard deviations (NaN when not
+/// estimated, or when the covariance could not be had).
+struct CalibrationEstimate {
+  double time_offset_s = 0;
+  double time_offset_sigma_s = std::numeric_limits<double>::quiet_NaN();
+  Eigen::Isometry3d T_body_camera = Eigen::Isometry3d::Identity();
+  /// Tangent [dp (m), dtheta (rad)] standard deviations of T_body_camera.
+  Eigen::Matrix<double, 6, 1> extrinsic_sigma =
+      Eigen::Matrix<double, 6, 1>::Constant(std::numeric_limits<double>::quiet_NaN());
+};
 
 /// The [Estimator] keys among these: ranges and meanings in EstimatorOptions::describe()
 /// (EstimatorOptions.cpp), docs/parameters.md.
@@ -78,12 +106,14 @@ struct SlidingWindowParams {
   double object_motion_sigma_translation = 0.05, object_motion_sigma_rotation = 0.05;
   Eigen::Vector3d gnss_lever_arm = Eigen::Vector3d::Zero();
   double gnss_huber_sigmas = 3.0;
+  CalibrationParams calibration;
 };
 
 struct FeatureObservation {
   std::int64_t id = -1;
   Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
-  double depth = 0;  ///< m; 0 = none
+  double depth = 0;                                    ///< m; 0 = none
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  ///< px/s (core::Feature::velocity)
 };
 
 /// One dynamic rigid object's features in a keyframe (r_O).
@@ -105,6 +135,9 @@ struct KeyframeInput {
   std::vector<FeatureObservation> nonrigid_features;
   /// Features on dynamic rigid objects (method.md r_O, r_om), per object.
   std::vector<RigidObjectInput> rigid_objects;
+  /// The body's angular rate at the keyframe (rad/s, body frame; the last gyro sample), which
+  /// with the window's velocity moves depths to the state time by the time offset.
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
   /// IMU mode: the preintegration from the previous keyframe to this one (null for the first,
   /// and where the IMU stream had a gap: that pair is then linked by vision alone).
   std::shared_ptr<ImuPreintegration> preintegration;
@@ -113,7 +146,7 @@ struct KeyframeInput {
 struct SolveReport {
   int iterations = 0;
   double solve_ms = 0;
-  int landmarks = 0;     ///< landmarks with factors in the problem
+  int landmarks = 0;      ///< landmarks with factors in the problem
   int rigid_objects = 0;  ///< rigid objects with factors in the problem
   double final_cost = 0;
   bool usable = true;
@@ -157,6 +190,20 @@ class SlidingWindow {
   /// The world gravity vector the IMU factors use.
   const Eigen::Vector3d& gravity() const { return params_.gravity; }
 
+  /// The calibration states now (CalibrationParams): the extrinsic and time offset every factor
+  /// uses. `with_sigma`: also their standard deviations from the last solve's problem (Ceres'
+  /// covariance; costs about a solve).
+  CalibrationEstimate calibration(bool with_sigma = false);
+  Eigen::Isometry3d extrinsic() const;
+  double timeOffset() const { return time_offset_[0]; }
+  /// A restarted window goes on from the last window's calibration (the priors keep their
+  /// configured means).
+  void continueCalibration(const Eigen::Isometry3d& T_body_camera, double time_offset_s);
+  /// A pixel moved to its keyframe's state time by the current time offset.
+  Eigen::Vector2d atStateTime(const Eigen::Vector2d& pixel, const Eigen::Vector2d& velocity) const {
+    return pixel - time_offset_[0] * velocity;
+  }
+
   /// The world velocity of non-rigid feature `id` when the window estimates it (seen in two
   /// keyframes or more), else nothing.
   std::optional<Eigen::Vector3d> nonRigidVelocity(std::int64_t id) const;
@@ -188,8 +235,9 @@ class SlidingWindow {
     std::size_t features = 0;  // static features given to it
     double pose[7];
     double speed_bias[9];
-    std::shared_ptr<ImuPreintegration> preintegration;  // from the previous keyframe
-    std::optional<GnssTarget> gnss;                     // GnssPositionFactor on the pose when set
+    Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // body, rad/s
+    std::shared_ptr<ImuPreintegration> preintegration;           // from the previous keyframe
+    std::optional<GnssTarget> gnss;  // GnssPositionFactor on the pose when set
   };
   /// A non-rigid feature: world position at its first keyframe's time t0 and world velocity.
   struct NonRigidPoint {
@@ -205,9 +253,18 @@ class SlidingWindow {
   class ProblemBuilder;
 
   SolveReport solve();  // SlidingWindowProblem.cpp
+  /// The keyframe's non-rigid observations: new points placed by their depth.
+  void observeNonRigid(const KeyframeInput& input, const Keyframe& k);
+  bool calibrationSettling() const;
+  bool estimatesTimeOffset() const;
+  bool estimatesExtrinsic() const;
   void repropagatePreintegrations();
   void marginalizeOldest();
   Eigen::Vector3d landmarkWorld(const Landmark& l) const;
+  /// A static point's depth measured at `pixel` (already at the state time) in keyframe `k`,
+  /// moved back to the state time: the image was taken t_d later, while the camera moved with
+  /// the keyframe's velocity and angular rate (the current estimate, constant within a solve).
+  double depthAtStateTime(const Keyframe& k, const Eigen::Vector2d& pixel, double depth) const;
   /// Depth of a world point in keyframe `k`'s camera, at the current estimate.
   double depthIn(const Keyframe& k, const Eigen::Vector3d& world) const;
   Keyframe* keyframe(std::int64_t id);
@@ -218,6 +275,9 @@ class SlidingWindow {
   SlidingWindowParams params_;
   PinholeCamera camera_;
   double extrinsic_[7];
+  double time_offset_[1];
+  int imu_keyframes_ = 0;              // keyframes added since the window turned visual-inertial
+  Eigen::Isometry3d extrinsic_prior_;  // the configured T_body_camera, the prior's mean
   std::deque<Keyframe> keyframes_;
   std::int64_t next_id_ = 0;
   LandmarkTable landmarks_;

@@ -75,6 +75,7 @@ class Augmenter : public Sequence {
   /// Body (IMU) trajectory in F, t in s since the first frame.
   const SplineTrajectory& trajectory() const { return *trajectory_; }
   const Eigen::Isometry3d& T_body_camera() const override { return T_body_camera_; }
+  std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const override;
   /// Ground-truth camera pose of frame `index` in F (what renderFrame writes).
   Eigen::Isometry3d T_floor_camera(size_t index) const;
 

@@ -7,6 +7,7 @@
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Options.h>
 #include <dynslam/sim/AugmentOptions.h>
+#include <dynslam/sim/CalibrationErrors.h>
 #include <dynslam/sim/GnssSynthesizer.h>
 #include <dynslam/sim/ImuSynthesizer.h>
 #include <dynslam/sim/SensorNoise.h>
@@ -102,6 +103,7 @@ struct ScenarioOptions {
   GnssSectionOptions gnss;
   NoiseSectionOptions noise;
   AugmentOptions augment;
+  CalibrationErrorOptions calibration;  ///< [Calibration]
 
   /// Loads every section strictly, rejects sections no struct reads, and checks what spans
   /// sections (cars only in street and augment scenes, waypoints, [Augment] for augment).

@@ -13,6 +13,7 @@
 #include <opencv2/core/types.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,10 @@ class Sequence {
   /// The colour camera's optical frame (x right, y down, z forward) in the body frame (x
   /// forward, y left, z up): what the writer stores as the RGB-D observations' sensorPose.
   virtual const Eigen::Isometry3d& T_body_camera() const = 0;
+  /// The camera's (optical frame) true pose at any time t (s since the start) on the trajectory
+  /// the IMU was synthesized from: the ground truth of a stamp that is not a render time
+  /// ([Calibration] time offset and jitter). Nothing outside the trajectory's time range.
+  virtual std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const = 0;
   /// The IMU's axes in the body frame. The simulated body is the IMU itself (the samples are
   /// synthesized with this extrinsic), so identity unless a source says otherwise.
   virtual Eigen::Isometry3d T_body_imu() const { return Eigen::Isometry3d::Identity(); }

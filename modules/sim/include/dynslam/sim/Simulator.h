@@ -32,6 +32,7 @@ class Simulator : public Sequence {
   const SplineTrajectory& trajectory() const { return *trajectory_; }
   /// Camera pose in the IMU (body) frame.
   const Eigen::Isometry3d& T_body_camera() const override { return T_body_camera_; }
+  std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const override;
   const std::vector<Agent>& agents() const { return scene_.agents; }
 
  private:

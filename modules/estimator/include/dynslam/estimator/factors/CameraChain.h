@@ -39,6 +39,7 @@ struct InverseDepthTransferJacobians {
   PoseTangentJacobian pose_j;  ///< w.r.t. T_world_body(j)
   PoseTangentJacobian extrinsic;
   Eigen::Vector3d inverse_depth;
+  Eigen::Matrix3d bearing;  ///< w.r.t. bearing_i
 };
 Eigen::Vector3d transferInverseDepthPoint(const Eigen::Isometry3d& T_world_body_i,
                                           const Eigen::Isometry3d& T_world_body_j,
