@@ -148,15 +148,34 @@ void markEdgeHoles(const cv::Mat& depth, double jump, int width, std::vector<uin
   }
 }
 
+// Stereo: the background left of a near object's left edge, which the right imager (baseline b
+// to the right) cannot see: f b (1/z_near - 1/z_far) px of it.
+void markStereoOcclusions(const cv::Mat& depth, double focal_baseline, double jump,
+                          std::vector<uint8_t>& hole) {
+  const int cols = depth.cols;
+  for (int y = 0; y < depth.rows; ++y) {
+    const float* row = depth.ptr<float>(y);
+    for (int x = 0; x + 1 < cols; ++x) {
+      const float far = row[x], near = row[x + 1];
+      if (!(far > 0 && near > 0 && far - near > jump)) continue;
+      const int band = int(std::ceil(focal_baseline * (1.0 / near - 1.0 / far)));
+      for (int i = 0; i < band && x - i >= 0; ++i) hole[static_cast<size_t>(y) * cols + x - i] = 1;
+    }
+  }
+}
+
 void addDepthNoise(cv::Mat& depth, const RgbdNoiseOptions& options, IndexStream& indices) {
   thread_local std::vector<uint8_t> hole;
   if (options.edge_hole_width > 0)
     markEdgeHoles(depth, options.edge_jump, options.edge_hole_width, hole);
   else
     hole.assign(static_cast<size_t>(depth.cols) * depth.rows, 0);
+  const double focal_baseline = options.focal_px * options.stereo_baseline;
+  if (options.stereo) markStereoOcclusions(depth, focal_baseline, options.edge_jump, hole);
   const float* normal = standardNormals().data();
   const auto sigma_min = static_cast<float>(options.depth_sigma_min);
-  const auto sigma_z2 = static_cast<float>(options.depth_sigma_z2);
+  const auto sigma_z2 = static_cast<float>(options.stereo ? options.disparity_sigma / focal_baseline
+                                                          : options.depth_sigma_z2);
   const auto min_range = static_cast<float>(options.min_range);
   const auto max_range = static_cast<float>(options.max_range);
   for (int y = 0; y < depth.rows; ++y) {

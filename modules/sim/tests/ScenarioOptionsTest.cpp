@@ -20,6 +20,24 @@ std::string loadError(const std::string& ini) {
   return "no error";
 }
 
+TEST(ScenarioOptions, TheStereoDepthModelTakesTheCamerasFocalLengthAndItsOwnKeysOnly) {
+  ScenarioOptions o;
+  o.load(
+      core::IniConfig::fromText("[Scenario]\nfx = 380\n[Noise]\ndepth_model = stereo\n"
+                                "stereo_baseline = 0.095\n[Calibration]\ntime_offset_s = 0.01\n"));
+  EXPECT_TRUE(o.noise.rgbd.stereo);
+  EXPECT_DOUBLE_EQ(o.noise.rgbd.focal_px, 380);
+  EXPECT_DOUBLE_EQ(o.noise.rgbd.stereo_baseline, 0.095);
+  EXPECT_DOUBLE_EQ(o.calibration.time_offset_s, 0.01);
+  EXPECT_NE(loadError("[Noise]\nstereo_baseline = 0.095\n").find("stereo_baseline"),
+            std::string::npos);
+  EXPECT_NE(
+      loadError("[Noise]\ndepth_model = stereo\ndepth_sigma_z2 = 0.002\n").find("depth_sigma_z2"),
+      std::string::npos);
+  EXPECT_NE(loadError("[Calibration]\ntime_offset_s = 0.3\n").find("time_offset_s"),
+            std::string::npos);
+}
+
 TEST(ScenarioOptions, ValuesAreReadIntoEverySection) {
   ScenarioOptions o;
   o.load(core::IniConfig::fromText(
@@ -39,16 +57,16 @@ TEST(ScenarioOptions, ValuesAreReadIntoEverySection) {
 }
 
 TEST(ScenarioOptions, BadValuesAreRefusedNamingSectionKeyAndFile) {
-  for (const auto& [ini, expected] : {
-           std::pair{"[Scenario]\nscene = forest\n", "[Scenario] in scenario.ini: scene = 'forest'"},
-           std::pair{"[Scenario]\nduration = 0\n", "duration = 0: must be > 0"},
-           std::pair{"[Camera]\npath = fly\n", "path = 'fly': expected orbit or drive"},
-           std::pair{"[People]\nwalkers = two\n", "walkers = 'two': expected a whole number"},
-           std::pair{"[Gnss]\nfix_quality = 9\n", "fix_quality = 9: must be in [0, 8]"},
-           std::pair{"[Imu]\nnoise = maybe\n", "noise = 'maybe'"},
-           std::pair{"[Augment]\nfloor_max_tilt_deg = 90\n", "floor_max_tilt_deg = 90"},
-           std::pair{"[Scenario]\nscene = room\n[Cars]\ndriving = 1\n", "[Cars] in scenario.ini"},
-           std::pair{"[Scenario]\nscene = augment\n", "[Augment] rawlog is empty"}}) {
+  for (const auto& [ini, expected] :
+       {std::pair{"[Scenario]\nscene = forest\n", "[Scenario] in scenario.ini: scene = 'forest'"},
+        std::pair{"[Scenario]\nduration = 0\n", "duration = 0: must be > 0"},
+        std::pair{"[Camera]\npath = fly\n", "path = 'fly': expected orbit or drive"},
+        std::pair{"[People]\nwalkers = two\n", "walkers = 'two': expected a whole number"},
+        std::pair{"[Gnss]\nfix_quality = 9\n", "fix_quality = 9: must be in [0, 8]"},
+        std::pair{"[Imu]\nnoise = maybe\n", "noise = 'maybe'"},
+        std::pair{"[Augment]\nfloor_max_tilt_deg = 90\n", "floor_max_tilt_deg = 90"},
+        std::pair{"[Scenario]\nscene = room\n[Cars]\ndriving = 1\n", "[Cars] in scenario.ini"},
+        std::pair{"[Scenario]\nscene = augment\n", "[Augment] rawlog is empty"}}) {
     const std::string error = loadError(ini);
     EXPECT_NE(error.find(expected), std::string::npos) << ini << " -> " << error;
   }

@@ -103,6 +103,35 @@ TEST(SensorNoise, HolesOnTheFarSideOfStepEdges) {
   }
 }
 
+// The stereo model (RealSense D4xx-like): sigma from the disparity noise, f = 380 px and b = 5 cm
+// give 0.0042 z^2; a person at 1 m before a wall at 3 m hides f b (1 - 1/3) = 12.7 -> 13 px of the
+// wall left of it from the right imager; nothing right of it beyond the ordinary edge hole.
+TEST(SensorNoise, StereoDepthNoiseAndTheOcclusionBandLeftOfNearObjects) {
+  RgbdNoiseOptions options;
+  options.stereo = true;
+  options.focal_px = 380;
+  options.edge_hole_width = 1;
+  std::mt19937_64 rng(21);
+  RenderOutput flat = constantFrame(3.0f);
+  applyRgbdNoise(flat, options, rng);
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(flat.depth, mean, stddev);
+  const double expected = options.depth_sigma_min + 9.0 * 0.08 / (380 * 0.05);
+  std::cout << "stereo, z 3 m: sigma " << stddev[0] << " m (model " << expected << ")\n";
+  EXPECT_NEAR(stddev[0], expected, 0.1 * expected);
+
+  RenderOutput frame = constantFrame(3.0f);
+  frame.depth.colRange(300, 400).setTo(1.0f);  // a near object in front of the wall
+  applyRgbdNoise(frame, options, rng);
+  for (int y = 0; y < 480; y += 11) {
+    for (int x = 300 - 13; x < 300; ++x) EXPECT_EQ(frame.depth.at<float>(y, x), 0.0f) << x;
+    EXPECT_GT(frame.depth.at<float>(y, 300 - 14), 2.5f);
+    EXPECT_GT(frame.depth.at<float>(y, 300), 0.5f);  // the object itself
+    EXPECT_EQ(frame.depth.at<float>(y, 400), 0.0f);  // the ordinary 1 px edge hole
+    EXPECT_GT(frame.depth.at<float>(y, 401), 2.5f);
+  }
+}
+
 TEST(SensorNoise, SmoothSlopesKeepTheirPixels) {
   // 2 mm per pixel: a floor seen at a grazing angle; no pair differs by edge_jump.
   RenderOutput frame = constantFrame(1.0f);

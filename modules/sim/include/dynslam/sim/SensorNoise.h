@@ -1,6 +1,11 @@
 #pragma once
 // What a real RGB-D sensor does to a perfect rendering: colour noise, depth noise growing with
-// z^2 (structured-light / stereo), no depth beyond the maximum range, holes along depth edges.
+// z^2, no depth beyond the maximum range, holes along depth edges. Two depth models:
+//   structured_light (Kinect-like): sigma(z) = depth_sigma_min + depth_sigma_z2 z^2, holes of
+//     edge_hole_width px on the far side of every depth step;
+//   stereo (RealSense D4xx-like, the depth imager on the left): sigma(z) = depth_sigma_min +
+//     z^2 disparity_sigma / (f b), and besides the edge holes the band the right imager cannot
+//     see: left of every near object, f b (1/z_near - 1/z_far) px of the background.
 #include <dynslam/sim/Rasterizer.h>
 
 #include <random>
@@ -15,6 +20,10 @@ struct RgbdNoiseOptions {
   double min_range = 0.3;          ///< m; nearer depth becomes 0 (invalid)
   double edge_jump = 0.10;         ///< m; neighbours differing more make a hole
   int edge_hole_width = 1;         ///< pixels removed on the far side of such an edge
+  bool stereo = false;             ///< the stereo model instead of structured light
+  double stereo_baseline = 0.05;   ///< m (D435: 50 mm)
+  double disparity_sigma = 0.08;   ///< px, the stereo matcher's subpixel noise
+  double focal_px = 525;           ///< px; the camera's fx (ScenarioOptions sets it)
 };
 
 /// Applies the noise model in place (rgb and depth; labels are untouched: they are the truth).
