@@ -58,7 +58,8 @@ SimulationWriter::SimulationWriter(const std::string& outDir, const sim::Sequenc
 }
 
 void SimulationWriter::writeCalibrationTruth() const {
-  std::ofstream out = openText(fs::path(dir_) / "calibration.txt",
+  const fs::path path = fs::path(dir_) / "calibration.txt";
+  std::ofstream out = openText(path,
                                "# [Calibration]: what the rawlog says against the truth. "
                                "t_imu = t_camera + time_offset_s;\n# camera_in_imu_*: the "
                                "camera (optical frame) in the IMU frame, a row-major 4x4 (the "
@@ -80,8 +81,7 @@ void SimulationWriter::writeCalibrationTruth() const {
       << "translation_error_m "
       << (believed_T_body_camera_.translation() - sim_.T_body_camera().translation()).norm()
       << '\n';
-  if (!out)
-    throw ConversionError("cannot write '" + (fs::path(dir_) / "calibration.txt").string() + "'");
+  if (!out) throw ConversionError("cannot write '" + path.string() + "'");
 }
 
 void SimulationWriter::writeSamplesUpTo(double t) {

@@ -23,9 +23,9 @@ const char* kUsage =
        dynslam-sim -h | --help
 
 Renders the scenario of NAME.ini (sections [Scenario] [Camera] [People] [Cars] [Imu] [Gnss]
-[Noise] [Augment] [Calibration], every key in docs/parameters.md; scene = room | corridor | market | street,
-or augment: a real rawlog with movers inserted) into a rawlog with full ground truth. The same
-ini and seed give byte-identical outputs.
+[Noise] [Augment] [Calibration], every key in docs/parameters.md; scene = room | corridor |
+market | street, or augment: a real rawlog with movers inserted) into a rawlog with full ground
+truth. The same ini and seed give byte-identical outputs.
 
 Options:
   --config FILE.ini            the scenario

@@ -11,9 +11,9 @@ namespace dynslam::runner {
 KeyframeLog::KeyframeLog(const std::string& path) : path_(path), out_(path, std::ios::trunc) {
   out_ << "frame,t_s,reason,static_features,shared_features,nonrigid_features,rigid_objects,"
           "solve_ms,iterations,restarted,visual_inertial,vx,vy,vz,acc_bias_x,acc_bias_y,"
-          "acc_bias_z,gyro_bias_x,gyro_bias_y,gyro_bias_z,time_offset_ms,extrinsic_rotation_change_"
-          "x_deg,"
-          "extrinsic_rotation_change_y_deg,extrinsic_rotation_change_z_deg,"
+          "acc_bias_z,gyro_bias_x,gyro_bias_y,gyro_bias_z,time_offset_ms,"
+          "extrinsic_rotation_change_x_deg,extrinsic_rotation_change_y_deg,"
+          "extrinsic_rotation_change_z_deg,"
           "extrinsic_translation_change_x,extrinsic_translation_change_y,"
           "extrinsic_translation_change_z\n";
   if (!out_) throw std::runtime_error("cannot write the keyframe log '" + path + "'");

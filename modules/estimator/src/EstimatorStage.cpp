@@ -34,9 +34,8 @@ void EstimatorStage::startWindow(const core::Frame& frame) {
   SlidingWindowParams params = options_.window;
   params.use_imu = false;  // until the IMU initialization succeeds, which finds the gravity
   params.gravity = Eigen::Vector3d(0, 0, -options_.imu_init.gravity_magnitude);
-  extrinsic_prior_ = configuredExtrinsic(frame);
   auto window = std::make_unique<SlidingWindow>(params, PinholeCamera{k.fx, k.fy, k.cx, k.cy},
-                                                extrinsic_prior_);
+                                                configuredExtrinsic(frame));
   // A restart goes on from the calibration estimated so far.
   if (window_) window->continueCalibration(window_->extrinsic(), window_->timeOffset());
   window_ = std::move(window);
@@ -235,10 +234,9 @@ EstimatorStage::KeyframeOutcome EstimatorStage::makeKeyframe(core::Frame& frame,
     record.gyro_bias = window_->latestGyroBias();
   }
   record.time_offset = window_->timeOffset();
-  const Eigen::Isometry3d change = extrinsic_prior_.inverse() * window_->extrinsic();
-  record.extrinsic_rotation_change = logSO3(change.rotation());
+  record.extrinsic_rotation_change = logSO3(extrinsicChange(window_->extrinsic()).rotation());
   record.extrinsic_translation_change =
-      window_->extrinsic().translation() - extrinsic_prior_.translation();
+      window_->extrinsic().translation() - window_->extrinsicPrior().translation();
   frame.keyframe = record;
   return outcome;
 }
@@ -258,16 +256,14 @@ KeyframeInput EstimatorStage::keyframeInput(const core::Frame& frame, RoutedFeat
     if (const auto f = followed.find(object.object_id); f != followed.end())
       object.first_pose_guess = f->second;
   in.rigid_objects = std::move(routed.rigid_objects);
+  const Eigen::Vector3d ba = window_->empty() ? Eigen::Vector3d::Zero() : window_->latestAccBias();
+  const Eigen::Vector3d bg = window_->empty() ? Eigen::Vector3d::Zero() : window_->latestGyroBias();
   for (auto s = frame.imu.rbegin(); s != frame.imu.rend(); ++s)
     if (s->has_gyro) {
-      in.angular_velocity =
-          s->gyro - (window_->empty() ? Eigen::Vector3d::Zero() : window_->latestGyroBias());
+      in.angular_velocity = s->gyro - bg;
       break;
     }
-  if (imu_)
-    in.preintegration =
-        imu_->cutAt(frame.t, window_->empty() ? Eigen::Vector3d::Zero() : window_->latestAccBias(),
-                    window_->empty() ? Eigen::Vector3d::Zero() : window_->latestGyroBias());
+  if (imu_) in.preintegration = imu_->cutAt(frame.t, ba, bg);
   return in;
 }
 
@@ -338,9 +334,7 @@ void EstimatorStage::finish() {
         "calibration: time offset "
         << 1e3 * final_calibration_.time_offset_s << " ms (sigma "
         << 1e3 * final_calibration_.time_offset_sigma_s << " ms), extrinsic rotation change "
-        << logSO3((extrinsic_prior_.inverse() * final_calibration_.T_body_camera).rotation())
-                   .norm() *
-               180 / M_PI
+        << logSO3(extrinsicChange(final_calibration_.T_body_camera).rotation()).norm() * 180 / M_PI
         << " deg");
   }
   MRPT_LOG_INFO_STREAM(
@@ -374,11 +368,15 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
   return out;
 }
 
+Eigen::Isometry3d EstimatorStage::extrinsicChange(const Eigen::Isometry3d& T_body_camera) const {
+  return window_ ? window_->extrinsicPrior().inverse() * T_body_camera : T_body_camera;
+}
+
 void EstimatorStage::appendCalibration(std::vector<std::pair<std::string, double>>& out) const {
   const CalibrationEstimate& c = final_calibration_;
   const auto sigmaOr = [](double sigma) { return std::isfinite(sigma) ? sigma : -1.0; };
-  const Eigen::Isometry3d T = window_ ? c.T_body_camera : extrinsic_prior_;
-  const Eigen::Isometry3d change = extrinsic_prior_.inverse() * T;
+  const Eigen::Isometry3d T = window_ ? c.T_body_camera : Eigen::Isometry3d::Identity();
+  const Eigen::Isometry3d change = extrinsicChange(T);
   // Roll, pitch, yaw (deg) of R = Rz(yaw) Ry(pitch) Rx(roll), the camera's axes in the IMU's.
   const Eigen::Vector3d ypr = T.rotation().eulerAngles(2, 1, 0) * 180 / M_PI;
   constexpr double kDeg = 180 / M_PI;

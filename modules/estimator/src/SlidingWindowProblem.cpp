@@ -355,10 +355,6 @@ void SlidingWindow::marginalizeOldest() {
   keyframes_.pop_front();
 }
 
-}  // namespace dynslam::estimator
-
-namespace dynslam::estimator {
-
 CalibrationEstimate SlidingWindow::calibration(bool with_sigma) {
   CalibrationEstimate out;
   out.time_offset_s = time_offset_[0];
@@ -375,25 +371,23 @@ CalibrationEstimate SlidingWindow::calibration(bool with_sigma) {
   if (extrinsic) blocks.emplace_back(extrinsic_, extrinsic_);
   // Sparse QR; when the window's information is rank-deficient (a landmark along its ray with
   // no depth), a dense SVD's pseudo-inverse still gives the calibration blocks.
-  ceres::Covariance::Options sparse;
-  ceres::Covariance::Options dense;
+  ceres::Covariance::Options sparse, dense;
   dense.algorithm_type = ceres::DENSE_SVD;
   dense.null_space_rank = -1;
-  auto covariancePtr = std::make_unique<ceres::Covariance>(sparse);
-  if (!covariancePtr->Compute(blocks, &problem)) {
-    covariancePtr = std::make_unique<ceres::Covariance>(dense);
-    if (!covariancePtr->Compute(blocks, &problem)) return out;
-  }
-  ceres::Covariance& covariance = *covariancePtr;
-  if (td) {
-    double variance = 0;
-    covariance.GetCovarianceBlock(time_offset_, time_offset_, &variance);
-    out.time_offset_sigma_s = std::sqrt(std::max(variance, 0.0));
-  }
-  if (extrinsic) {
-    Eigen::Matrix<double, 6, 6, Eigen::RowMajor> C;
-    covariance.GetCovarianceBlockInTangentSpace(extrinsic_, extrinsic_, C.data());
-    out.extrinsic_sigma = C.diagonal().cwiseMax(0.0).cwiseSqrt();
+  for (const ceres::Covariance::Options& options : {sparse, dense}) {
+    ceres::Covariance covariance(options);
+    if (!covariance.Compute(blocks, &problem)) continue;
+    if (td) {
+      double variance = 0;
+      covariance.GetCovarianceBlock(time_offset_, time_offset_, &variance);
+      out.time_offset_sigma_s = std::sqrt(std::max(variance, 0.0));
+    }
+    if (extrinsic) {
+      Eigen::Matrix<double, 6, 6, Eigen::RowMajor> C;
+      covariance.GetCovarianceBlockInTangentSpace(extrinsic_, extrinsic_, C.data());
+      out.extrinsic_sigma = C.diagonal().cwiseMax(0.0).cwiseSqrt();
+    }
+    break;
   }
   return out;
 }

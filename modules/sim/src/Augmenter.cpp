@@ -288,9 +288,4 @@ void Augmenter::renderFrame(size_t index, SimFrame& out) const {
   appendInIdOrder(out.objects, spriteTruths);
 }
 
-std::optional<Eigen::Isometry3d> Augmenter::cameraPoseAt(double t) const {
-  if (t < trajectory_->startTime() || t > trajectory_->endTime()) return std::nullopt;
-  return trajectory_->sample(t).T_world_body * T_body_camera_;
-}
-
 }  // namespace dynslam::sim

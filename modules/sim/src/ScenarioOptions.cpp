@@ -10,6 +10,11 @@ namespace dynslam::sim {
 
 using core::Range;
 
+namespace {
+constexpr core::Keyword<DepthModel> kDepthModels[] = {
+    {"structured_light", DepthModel::StructuredLight}, {"stereo", DepthModel::Stereo}};
+}  // namespace
+
 void WorldOptions::describe(core::OptionVisitor& v) {
   const Range positive = Range::above(0), count = Range::atLeast(0);
   v.word("scene", scene, {"room", "corridor", "market", "street", "augment"},
@@ -142,20 +147,20 @@ void NoiseSectionOptions::describe(core::OptionVisitor& v) {
   v.key("edge_jump", rgbd.edge_jump, Range::above(0),
         "m; depth steps larger than this leave holes");
   v.key("edge_hole_width", rgbd.edge_hole_width, off, "px removed beside such a step");
-  v.word("depth_model", depth_model, {"structured_light", "stereo"},
-         "structured_light: sigma = min + depth_sigma_z2 z^2 (Kinect-like); stereo: sigma = min + "
-         "z^2 disparity_sigma / (fx stereo_baseline), and the background left of near objects "
-         "that the right imager cannot see is a hole (RealSense D4xx-like)");
+  v.key("depth_model", rgbd.depth_model, kDepthModels,
+        "structured_light: sigma = min + depth_sigma_z2 z^2 (Kinect-like); stereo: sigma = min + "
+        "z^2 disparity_sigma / (fx stereo_baseline), and the background left of near objects "
+        "that the right imager cannot see is a hole (RealSense D4xx-like)");
   v.key("stereo_baseline", rgbd.stereo_baseline, Range::above(0), "m (stereo)");
   v.key("disparity_sigma", rgbd.disparity_sigma, Range::above(0), "px (stereo)");
-  rgbd.stereo = depth_model == "stereo";
+  const bool stereo = rgbd.depth_model == DepthModel::Stereo;
   const RgbdNoiseOptions defaults;
   v.requires("stereo_baseline", rgbd.stereo_baseline != defaults.stereo_baseline,
-             "depth_model = stereo", rgbd.stereo);
+             "depth_model = stereo", stereo);
   v.requires("disparity_sigma", rgbd.disparity_sigma != defaults.disparity_sigma,
-             "depth_model = stereo", rgbd.stereo);
+             "depth_model = stereo", stereo);
   v.requires("depth_sigma_z2", rgbd.depth_sigma_z2 != defaults.depth_sigma_z2,
-             "depth_model = structured_light", !rgbd.stereo);
+             "depth_model = structured_light", !stereo);
 }
 
 void ScenarioOptions::load(const core::IniConfig& cfg) {

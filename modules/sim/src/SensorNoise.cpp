@@ -170,12 +170,13 @@ void addDepthNoise(cv::Mat& depth, const RgbdNoiseOptions& options, IndexStream&
     markEdgeHoles(depth, options.edge_jump, options.edge_hole_width, hole);
   else
     hole.assign(static_cast<size_t>(depth.cols) * depth.rows, 0);
+  const bool stereo = options.depth_model == DepthModel::Stereo;
   const double focal_baseline = options.focal_px * options.stereo_baseline;
-  if (options.stereo) markStereoOcclusions(depth, focal_baseline, options.edge_jump, hole);
+  if (stereo) markStereoOcclusions(depth, focal_baseline, options.edge_jump, hole);
   const float* normal = standardNormals().data();
   const auto sigma_min = static_cast<float>(options.depth_sigma_min);
-  const auto sigma_z2 = static_cast<float>(options.stereo ? options.disparity_sigma / focal_baseline
-                                                          : options.depth_sigma_z2);
+  const auto sigma_z2 = static_cast<float>(stereo ? options.disparity_sigma / focal_baseline
+                                                  : options.depth_sigma_z2);
   const auto min_range = static_cast<float>(options.min_range);
   const auto max_range = static_cast<float>(options.max_range);
   for (int y = 0; y < depth.rows; ++y) {

@@ -160,9 +160,4 @@ void Simulator::renderFrame(size_t index, SimFrame& out) const {
   applyRgbdNoise(out.image, options_.noise.rgbd, noiseRng);
 }
 
-std::optional<Eigen::Isometry3d> Simulator::cameraPoseAt(double t) const {
-  if (t < trajectory_->startTime() || t > trajectory_->endTime()) return std::nullopt;
-  return trajectory_->sample(t).T_world_body * T_body_camera_;
-}
-
 }  // namespace dynslam::sim

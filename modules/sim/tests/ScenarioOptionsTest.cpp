@@ -25,7 +25,7 @@ TEST(ScenarioOptions, TheStereoDepthModelTakesTheCamerasFocalLengthAndItsOwnKeys
   o.load(
       core::IniConfig::fromText("[Scenario]\nfx = 380\n[Noise]\ndepth_model = stereo\n"
                                 "stereo_baseline = 0.095\n[Calibration]\ntime_offset_s = 0.01\n"));
-  EXPECT_TRUE(o.noise.rgbd.stereo);
+  EXPECT_EQ(o.noise.rgbd.depth_model, DepthModel::Stereo);
   EXPECT_DOUBLE_EQ(o.noise.rgbd.focal_px, 380);
   EXPECT_DOUBLE_EQ(o.noise.rgbd.stereo_baseline, 0.095);
   EXPECT_DOUBLE_EQ(o.calibration.time_offset_s, 0.01);

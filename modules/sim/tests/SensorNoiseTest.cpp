@@ -108,7 +108,7 @@ TEST(SensorNoise, HolesOnTheFarSideOfStepEdges) {
 // wall left of it from the right imager; nothing right of it beyond the ordinary edge hole.
 TEST(SensorNoise, StereoDepthNoiseAndTheOcclusionBandLeftOfNearObjects) {
   RgbdNoiseOptions options;
-  options.stereo = true;
+  options.depth_model = DepthModel::Stereo;
   options.focal_px = 380;
   options.edge_hole_width = 1;
   std::mt19937_64 rng(21);

@@ -155,6 +155,9 @@ class EstimatorStage : public core::Stage {
   void tryImuInitialization(double t);
   /// use_gnss: hands the window the GNSS targets of keyframes whose fixes have arrived.
   void anchorToGnss(double t);
+  /// T_body_camera's change from the configured extrinsic: prior^-1 T (T itself before the
+  /// first frame).
+  Eigen::Isometry3d extrinsicChange(const Eigen::Isometry3d& T_body_camera) const;
   /// statistics()'s calibration entries.
   void appendCalibration(std::vector<std::pair<std::string, double>>& out) const;
   /// A pose change no larger than pnp_max_correction_m / _deg (and finite).
@@ -163,7 +166,6 @@ class EstimatorStage : public core::Stage {
   EstimatorOptions options_;
   std::optional<Eigen::Isometry3d> camera_in_imu_;  // options_.camera_in_imu, parsed
   CalibrationEstimate final_calibration_;           // finish(): with standard deviations
-  Eigen::Isometry3d extrinsic_prior_ = Eigen::Isometry3d::Identity();
   std::unique_ptr<SlidingWindow> window_;
   std::unique_ptr<KeyframeImu> imu_;
   std::unique_ptr<GnssAnchor> gnss_;

@@ -195,6 +195,8 @@ class SlidingWindow {
   /// covariance; costs about a solve).
   CalibrationEstimate calibration(bool with_sigma = false);
   Eigen::Isometry3d extrinsic() const;
+  /// The configured T_body_camera the window started from (the extrinsic prior's mean).
+  const Eigen::Isometry3d& extrinsicPrior() const { return extrinsic_prior_; }
   double timeOffset() const { return time_offset_[0]; }
   /// A restarted window goes on from the last window's calibration (the priors keep their
   /// configured means).

@@ -73,9 +73,8 @@ class Augmenter : public Sequence {
   const AugmentSummary& summary() const { return summary_; }
   std::vector<std::string> notes() const override { return summary_.fallbacks; }
   /// Body (IMU) trajectory in F, t in s since the first frame.
-  const SplineTrajectory& trajectory() const { return *trajectory_; }
+  const SplineTrajectory& trajectory() const override { return *trajectory_; }
   const Eigen::Isometry3d& T_body_camera() const override { return T_body_camera_; }
-  std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const override;
   /// Ground-truth camera pose of frame `index` in F (what renderFrame writes).
   Eigen::Isometry3d T_floor_camera(size_t index) const;
 

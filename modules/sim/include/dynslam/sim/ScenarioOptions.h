@@ -91,7 +91,6 @@ struct GnssSectionOptions : core::Options {
 
 struct NoiseSectionOptions : core::Options {
   RgbdNoiseOptions rgbd;
-  std::string depth_model = "structured_light";  ///< sets rgbd.stereo
   void describe(core::OptionVisitor& v) override;
 };
 

@@ -12,6 +12,8 @@
 
 namespace dynslam::sim {
 
+enum class DepthModel { StructuredLight, Stereo };
+
 struct RgbdNoiseOptions {
   double colour_sigma = 3.0;       ///< grey levels, per channel
   double depth_sigma_z2 = 0.0015;  ///< m^-1: sigma(z) = depth_sigma_z2 * z^2 (+ depth_sigma_min)
@@ -20,10 +22,10 @@ struct RgbdNoiseOptions {
   double min_range = 0.3;          ///< m; nearer depth becomes 0 (invalid)
   double edge_jump = 0.10;         ///< m; neighbours differing more make a hole
   int edge_hole_width = 1;         ///< pixels removed on the far side of such an edge
-  bool stereo = false;             ///< the stereo model instead of structured light
-  double stereo_baseline = 0.05;   ///< m (D435: 50 mm)
-  double disparity_sigma = 0.08;   ///< px, the stereo matcher's subpixel noise
-  double focal_px = 525;           ///< px; the camera's fx (ScenarioOptions sets it)
+  DepthModel depth_model = DepthModel::StructuredLight;
+  double stereo_baseline = 0.05;  ///< m (D435: 50 mm)
+  double disparity_sigma = 0.08;  ///< px, the stereo matcher's subpixel noise
+  double focal_px = 525;          ///< px; the camera's fx (ScenarioOptions sets it)
 };
 
 /// Applies the noise model in place (rgb and depth; labels are untouched: they are the truth).

@@ -8,6 +8,7 @@
 #include <dynslam/sim/GnssSynthesizer.h>
 #include <dynslam/sim/ImuSynthesizer.h>
 #include <dynslam/sim/Rasterizer.h>
+#include <dynslam/sim/SplineTrajectory.h>
 
 #include <Eigen/Geometry>
 #include <opencv2/core/types.hpp>
@@ -70,10 +71,16 @@ class Sequence {
   /// The colour camera's optical frame (x right, y down, z forward) in the body frame (x
   /// forward, y left, z up): what the writer stores as the RGB-D observations' sensorPose.
   virtual const Eigen::Isometry3d& T_body_camera() const = 0;
-  /// The camera's (optical frame) true pose at any time t (s since the start) on the trajectory
-  /// the IMU was synthesized from: the ground truth of a stamp that is not a render time
-  /// ([Calibration] time offset and jitter). Nothing outside the trajectory's time range.
-  virtual std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const = 0;
+  /// The body's trajectory (t in s since the start), which the IMU is synthesized from.
+  virtual const SplineTrajectory& trajectory() const = 0;
+  /// The camera's (optical frame) true pose at any time t (s since the start) on trajectory():
+  /// the ground truth of a stamp that is not a render time ([Calibration] time offset and
+  /// jitter). Nothing outside the trajectory's time range.
+  std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const {
+    const SplineTrajectory& path = trajectory();
+    if (t < path.startTime() || t > path.endTime()) return std::nullopt;
+    return path.sample(t).T_world_body * T_body_camera();
+  }
   /// The IMU's axes in the body frame. The simulated body is the IMU itself (the samples are
   /// synthesized with this extrinsic), so identity unless a source says otherwise.
   virtual Eigen::Isometry3d T_body_imu() const { return Eigen::Isometry3d::Identity(); }

@@ -29,10 +29,9 @@ class Simulator : public Sequence {
   double maxRange() const override { return options_.noise.rgbd.max_range; }
 
   const ScenarioOptions& options() const { return options_; }
-  const SplineTrajectory& trajectory() const { return *trajectory_; }
+  const SplineTrajectory& trajectory() const override { return *trajectory_; }
   /// Camera pose in the IMU (body) frame.
   const Eigen::Isometry3d& T_body_camera() const override { return T_body_camera_; }
-  std::optional<Eigen::Isometry3d> cameraPoseAt(double t) const override;
   const std::vector<Agent>& agents() const { return scene_.agents; }
 
  private:
