@@ -73,25 +73,26 @@ Eigen::Isometry3d parseCameraInImu(const std::string& text, const std::string& k
       values.push_back(std::stod(token, &used));
       if (used != token.size()) throw std::invalid_argument(token);
     } catch (const std::exception&) {
-      throw std::invalid_argument(key + ": '" + token + "' is not a number");
+      throw core::ConfigError(key + ": '" + token + "' is not a number");
     }
   }
   if (values.size() != 16)
-    throw std::invalid_argument(key + ": expected 16 numbers (a row-major 4x4), got " +
-                                std::to_string(values.size()));
+    throw core::ConfigError(key + ": expected 16 numbers (a row-major 4x4), got " +
+                            std::to_string(values.size()));
   const Eigen::Matrix4d M =
       Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(values.data());
-  if (!M.allFinite() || (M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9)
-    throw std::invalid_argument(key + ": the last row must be 0 0 0 1");
+  if (!M.allFinite()) throw core::ConfigError(key + ": the numbers must be finite");
+  if ((M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9)
+    throw core::ConfigError(key + ": the last row must be 0 0 0 1");
   const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
   const double offOrthonormal =
       (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (offOrthonormal > 1e-6 || R.determinant() < 0)
-    throw std::invalid_argument(key +
-                                ": the rotation is not orthonormal with determinant +1 "
-                                "(R^T R differs from I by " +
-                                std::to_string(offOrthonormal) + ", det " +
-                                std::to_string(R.determinant()) + ")");
+    throw core::ConfigError(key +
+                            ": the rotation is not orthonormal with determinant +1 (R^T R "
+                            "differs from I by " +
+                            std::to_string(offOrthonormal) + ", det " +
+                            std::to_string(R.determinant()) + ")");
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = Eigen::Quaterniond(R).normalized().toRotationMatrix();
   T.translation() = M.topRightCorner<3, 1>();

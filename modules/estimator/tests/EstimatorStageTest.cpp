@@ -1,5 +1,6 @@
 // EstimatorStage on synthetic frames (SyntheticFrames.h: the room's corner seen as tracked
 // features from a known path, with the path's IMU samples), run directly, frame by frame.
+#include "StageTestSupport.h"
 #include "SyntheticFrames.h"
 
 #include <dynslam/estimator/EstimatorStage.h>
@@ -18,14 +19,6 @@ using namespace dynslam::estimator;
 using namespace dynslam::estimator::testing;
 
 namespace {
-
-/// A stage whose solves stop at their iteration limit, not on the clock (repeatable runs).
-std::unique_ptr<EstimatorStage> makeStage(const std::string& settings = "") {
-  auto stage = std::make_unique<EstimatorStage>();
-  stage->configure(
-      core::IniConfig::fromText("[Estimator]\nmax_solver_time = 100\n" + settings), "Estimator");
-  return stage;
-}
 
 /// The keyframes' records, in order.
 std::vector<core::KeyframeRecord> keyframesOf(const std::vector<core::Frame>& frames) {
@@ -195,27 +188,19 @@ TEST(EstimatorStage, AFailureRestartsTheWindowAndPosesKeepComing) {
 // [Estimator] is read through EstimatorOptions::describe(): a value outside a key's range, or a
 // setting that acts only through another one left off, is refused naming the keys.
 TEST(EstimatorOptions, RefusesValuesOutOfRangeAndSettingsThatWouldDoNothing) {
-  const auto refusal = [](const std::string& settings) -> std::string {
-    try {
-      makeStage(settings);
-    } catch (const core::ConfigError& e) {
-      return e.what();
-    }
-    return "";
-  };
-  EXPECT_NE(refusal("window_size = 1\n").find("window_size"), std::string::npos);
-  EXPECT_NE(refusal("pnp_max_imu_correction_m = -0.1\n").find("pnp_max_imu_correction_m"),
+  EXPECT_NE(configRefusal("window_size = 1\n").find("window_size"), std::string::npos);
+  EXPECT_NE(configRefusal("pnp_max_imu_correction_m = -0.1\n").find("pnp_max_imu_correction_m"),
             std::string::npos);
-  EXPECT_NE(refusal("gravity = 9.81 m/s^2\n").find("gravity"), std::string::npos);
+  EXPECT_NE(configRefusal("gravity = 9.81 m/s^2\n").find("gravity"), std::string::npos);
   for (const std::string key : {"gnss_uere_horizontal = 0.025", "gnss_lever_arm_z = 0.5"}) {
-    const std::string why = refusal(key + "\n");
+    const std::string why = configRefusal(key + "\n");
     EXPECT_NE(why.find(key.substr(0, key.find(' '))), std::string::npos) << why;
     EXPECT_NE(why.find("use_gnss"), std::string::npos) << why;
-    EXPECT_EQ(refusal(key + "\nuse_gnss = true\n"), "");
+    EXPECT_EQ(configRefusal(key + "\nuse_gnss = true\n"), "");
   }
-  const std::string why = refusal("dynamic_handling = remove\nrigid_factors = false\n");
+  const std::string why = configRefusal("dynamic_handling = remove\nrigid_factors = false\n");
   EXPECT_NE(why.find("rigid_factors"), std::string::npos) << why;
   EXPECT_NE(why.find("dynamic_handling = full"), std::string::npos) << why;
-  EXPECT_EQ(refusal("dynamic_handling = full\nrigid_factors = false\n"), "");
-  EXPECT_EQ(refusal("dynamic_handling = remove\n"), "");
+  EXPECT_EQ(configRefusal("dynamic_handling = full\nrigid_factors = false\n"), "");
+  EXPECT_EQ(configRefusal("dynamic_handling = remove\n"), "");
 }

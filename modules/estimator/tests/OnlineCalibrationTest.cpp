@@ -1,6 +1,7 @@
 // The camera-IMU calibration the estimator is configured with (CalibrationParams in
 // SlidingWindow.h, camera_in_imu) on synthetic frames (SyntheticFrames.h) whose images are taken
 // late: a known offset corrects them; bad values are refused naming their key.
+#include "StageTestSupport.h"
 #include "SyntheticFrames.h"
 
 #include <dynslam/estimator/EstimatorStage.h>
@@ -17,13 +18,6 @@ using namespace dynslam::estimator;
 using namespace dynslam::estimator::testing;
 
 namespace {
-
-std::unique_ptr<EstimatorStage> makeStage(const std::string& settings) {
-  auto stage = std::make_unique<EstimatorStage>();
-  stage->configure(core::IniConfig::fromText("[Estimator]\nmax_solver_time = 100\n" + settings),
-                   "Estimator");
-  return stage;
-}
 
 /// camera_in_imu for the identity turned by `degrees` about `axis`.
 std::string rotatedCamera(double degrees, const Eigen::Vector3d& axis) {
@@ -65,26 +59,18 @@ TEST(OnlineCalibration, AKnownTimeOffsetTakesTheLagOutOfThePoses) {
 }
 
 TEST(OnlineCalibration, ABadTimeOffsetPriorOrExtrinsicIsRefusedNamingTheKey) {
-  const auto refusal = [](const std::string& settings) -> std::string {
-    try {
-      makeStage(settings);
-    } catch (const std::exception& e) {
-      return e.what();
-    }
-    return "";
-  };
-  EXPECT_NE(refusal("time_offset = 0.25\n").find("time_offset"), std::string::npos);
-  EXPECT_NE(refusal("time_offset = -0.21\n").find("time_offset"), std::string::npos);
-  EXPECT_EQ(refusal("time_offset = 0.2\n"), "");
+  EXPECT_NE(configRefusal("time_offset = 0.25\n").find("time_offset"), std::string::npos);
+  EXPECT_NE(configRefusal("time_offset = -0.21\n").find("time_offset"), std::string::npos);
+  EXPECT_EQ(configRefusal("time_offset = 0.2\n"), "");
   // A scaled rotation, a reflection, a matrix too short, a bottom row that is not 0 0 0 1.
   const std::string scaled = "camera_in_imu = 1.01 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n";
   const std::string reflected = "camera_in_imu = -1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n";
   const std::string shortOne = "camera_in_imu = 1 0 0 0  0 1 0 0  0 0 1 0\n";
   const std::string bottom = "camera_in_imu = 1 0 0 0  0 1 0 0  0 0 1 0  0 0 1 1\n";
   for (const auto& bad : {scaled, reflected, shortOne, bottom}) {
-    const std::string why = refusal(bad);
+    const std::string why = configRefusal(bad);
     EXPECT_NE(why.find("[Estimator] camera_in_imu"), std::string::npos) << bad << " -> " << why;
   }
-  EXPECT_NE(refusal(scaled).find("orthonormal"), std::string::npos);
-  EXPECT_EQ(refusal(rotatedCamera(2.0, Eigen::Vector3d::UnitZ())), "");
+  EXPECT_NE(configRefusal(scaled).find("orthonormal"), std::string::npos);
+  EXPECT_EQ(configRefusal(rotatedCamera(2.0, Eigen::Vector3d::UnitZ())), "");
 }

@@ -78,7 +78,7 @@ struct EstimatorOptions : core::Options {
 };
 
 /// camera_in_imu parsed and checked: 16 numbers, the last row 0 0 0 1, a rotation orthonormal
-/// with determinant +1 (within 1e-6). Throws std::invalid_argument naming `key` otherwise.
+/// with determinant +1 (within 1e-6). Throws core::ConfigError naming `key` otherwise.
 Eigen::Isometry3d parseCameraInImu(const std::string& text, const std::string& key);
 
 class EstimatorStage : public core::Stage {
