@@ -21,7 +21,7 @@
 # (configured), ape_td20_est (estimated) and the estimate at 10 s and at the end (ms); for true
 # offsets -30 -10 +10 +30 ms the estimate's error at 10 s (ms); for a 2 degree rotation error:
 # ape_rot2 as believed, ape_rot2_est (estimated, rotation only) and the rotation error left at the
-# end (deg).
+# end (deg); ape_jit2: the camera's stamps jittered by 2 ms (sigma) against the IMU.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=bench/lib.sh
@@ -53,7 +53,8 @@ tdm30:--set Calibration.time_offset_s=-0.03
 tdm10:--set Calibration.time_offset_s=-0.01
 tdp10:--set Calibration.time_offset_s=0.01
 tdp30:--set Calibration.time_offset_s=0.03
-rot2:--set Calibration.cam_yaw_error_deg=2"
+rot2:--set Calibration.cam_yaw_error_deg=2
+jit2:--set Calibration.time_jitter_s=0.002"
 EST_TD="--set Estimator.estimate_time_offset=true"
 EST_ROT="--set Estimator.estimate_extrinsic=rotation"
 # The runs: render, name, settings.
@@ -67,7 +68,8 @@ tdm10:est:$EST_TD
 tdp10:est:$EST_TD
 tdp30:est:$EST_TD
 rot2:off:
-rot2:est:$EST_ROT"
+rot2:est:$EST_ROT
+jit2:off:"
 
 render() {  # seed scenario name settings...
   local seed="$1" sc="$2" name="$3"; shift 3
@@ -132,7 +134,7 @@ rotationLeft() {
 }
 
 {
-  printf 'seed\tscenario\tape_exact\tape_exact_est\tratio\tsolve_ms\tsolve_ms_est\tape_td20\tape_td20_known\tape_td20_est\ttd20_at10\ttd20_end\terr_m30\terr_m10\terr_p10\terr_p30\tape_rot2\tape_rot2_est\trot2_left_deg\n'
+  printf 'seed\tscenario\tape_exact\tape_exact_est\tratio\tsolve_ms\tsolve_ms_est\tape_td20\tape_td20_known\tape_td20_est\ttd20_at10\ttd20_end\terr_m30\terr_m10\terr_p10\terr_p30\tape_rot2\tape_rot2_est\trot2_left_deg\tape_jit2\n'
   for seed in $SEEDS; do for sc in $SCENARIOS; do
     D="$OUT/seed$seed/$sc"
     e=$(ape "$D/exact/run_off"); ee=$(ape "$D/exact/run_est")
@@ -146,7 +148,8 @@ rotationLeft() {
       printf '\t%s' "$(awk -v a="$(tdAt "$D/${r%%:*}/run_est/keyframes.csv" 10)" -v b="${r##*:}" \
         'BEGIN { printf "%.2f", a - b }')"
     done
-    printf '\t%s\t%s\t%s\n' "$(ape "$D/rot2/run_off")" "$(ape "$D/rot2/run_est")" \
-      "$(rotationLeft "$D/rot2/calibration.txt" "$D/rot2/run_est/keyframes.csv")"
+    printf '\t%s\t%s\t%s\t%s\n' "$(ape "$D/rot2/run_off")" "$(ape "$D/rot2/run_est")" \
+      "$(rotationLeft "$D/rot2/calibration.txt" "$D/rot2/run_est/keyframes.csv")" \
+      "$(ape "$D/jit2/run_off")"
   done; done
 } | tee "$OUT/rows.tsv" | column -t

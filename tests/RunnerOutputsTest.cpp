@@ -124,14 +124,15 @@ void checkKeyframesCsv(const std::string& out) {
             "acc_bias_z,gyro_bias_x,gyro_bias_y,gyro_bias_z,time_offset_ms,"
             "extrinsic_rotation_change_x_deg,extrinsic_rotation_change_y_deg,"
             "extrinsic_rotation_change_z_deg,extrinsic_translation_change_x,"
-            "extrinsic_translation_change_y,extrinsic_translation_change_z");
+            "extrinsic_translation_change_y,extrinsic_translation_change_z,time_offset_free,"
+            "extrinsic_free");
   size_t rows = 0;
   long lastFrame = -1;
   for (std::string line; std::getline(in, line); ++rows) {
     const auto fields = split(line, ',');
-    ASSERT_EQ(fields.size(), 27u) << line;
+    ASSERT_EQ(fields.size(), 29u) << line;
     // Neither the time offset nor the extrinsic is estimated by params/sim_vio.ini.
-    for (size_t c = 20; c < 27; ++c) EXPECT_EQ(std::stod(fields[c]), 0.0) << line;
+    for (size_t c = 20; c < 29; ++c) EXPECT_EQ(std::stod(fields[c]), 0.0) << line;
     const long frame = std::stol(fields[0]);
     EXPECT_GT(frame, lastFrame) << line;
     EXPECT_LT(frame, static_cast<long>(kFrames)) << line;

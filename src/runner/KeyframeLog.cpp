@@ -15,7 +15,7 @@ KeyframeLog::KeyframeLog(const std::string& path) : path_(path), out_(path, std:
           "extrinsic_rotation_change_x_deg,extrinsic_rotation_change_y_deg,"
           "extrinsic_rotation_change_z_deg,"
           "extrinsic_translation_change_x,extrinsic_translation_change_y,"
-          "extrinsic_translation_change_z\n";
+          "extrinsic_translation_change_z,time_offset_free,extrinsic_free\n";
   if (!out_) throw std::runtime_error("cannot write the keyframe log '" + path + "'");
 }
 
@@ -32,7 +32,7 @@ void KeyframeLog::append(const core::Frame& frame) {
   out_ << ',' << 1e3 * k.time_offset;
   for (const auto* v : {&rotationDeg, &k.extrinsic_translation_change})
     out_ << ',' << (*v)(0) << ',' << (*v)(1) << ',' << (*v)(2);
-  out_ << '\n';
+  out_ << ',' << int(k.time_offset_free) << ',' << int(k.extrinsic_free) << '\n';
   // Flushed now and then rather than per row: a crash loses at most a few rows.
   if (++rows_ % 20 == 0) out_.flush();
   if (!out_) throw std::runtime_error("cannot write the keyframe log '" + path_ + "'");

@@ -41,11 +41,22 @@ void EstimatorOptions::describeCalibration(core::OptionVisitor& v) {
   v.key("estimate_extrinsic", c.estimate_extrinsic, kExtrinsicModes,
         "none: the camera-IMU extrinsic as configured; rotation: its rotation estimated online "
         "once the IMU is initialized, translation held; full: both (VINS-Fusion's "
-        "estimate_extrinsic); not yet reliable (docs/benchmarks.md)");
+        "estimate_extrinsic), held while the window does not turn (calibration_min_rotation_deg); "
+        "the window's gauge is then its first camera pose and the world gravity is estimated "
+        "with it (docs/benchmarks.md)");
   v.key("extrinsic_sigma_rotation_deg", c.extrinsic_sigma_rotation_deg, Range::above(0),
         "deg; the prior's sigma on the extrinsic rotation (estimate_extrinsic)");
   v.key("extrinsic_sigma_translation", c.extrinsic_sigma_translation_m, Range::above(0),
         "m; the prior's sigma on the extrinsic translation (estimate_extrinsic = full)");
+  v.key("calibration_min_rotation_deg", c.excitation.min_rotation_deg, Range::atLeast(0),
+        "deg; the extrinsic is held where it is while no keyframe of the window is turned by "
+        "this much from the window's first (without rotation it is not observable)");
+  v.key("calibration_min_rate_change", c.excitation.min_rate_change, Range::atLeast(0),
+        "rad/s; t_d is held while the window's angular rates stay this close to their mean and "
+        "its body-frame velocities closer than calibration_min_velocity_change (under constant "
+        "local velocity a time offset is not observable)");
+  v.key("calibration_min_velocity_change", c.excitation.min_velocity_change, Range::atLeast(0),
+        "m/s; see calibration_min_rate_change");
   v.key("camera_in_imu", camera_in_imu,
         "the colour camera in the IMU frame, 16 numbers: a row-major 4x4 (Kalibr's T_imu_cam, "
         "VINS-Fusion's body_T_cam0); the configured extrinsic instead of the rawlog's sensor "

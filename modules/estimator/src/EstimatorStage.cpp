@@ -237,6 +237,10 @@ EstimatorStage::KeyframeOutcome EstimatorStage::makeKeyframe(core::Frame& frame,
   record.extrinsic_rotation_change = logSO3(extrinsicChange(window_->extrinsic()).rotation());
   record.extrinsic_translation_change =
       window_->extrinsic().translation() - window_->extrinsicPrior().translation();
+  record.time_offset_free = window_->timeOffsetFree();
+  record.extrinsic_free = window_->extrinsicFree();
+  free_keyframes_[0] += record.time_offset_free;
+  free_keyframes_[1] += record.extrinsic_free;
   frame.keyframe = record;
   return outcome;
 }
@@ -393,7 +397,9 @@ void EstimatorStage::appendCalibration(std::vector<std::pair<std::string, double
        {"extrinsic_rotation_change_deg", logSO3(change.rotation()).norm() * kDeg},
        {"extrinsic_translation_change_m", change.translation().norm()},
        {"extrinsic_sigma_rotation_deg", sigmaOr(c.extrinsic_sigma.tail<3>().maxCoeff() * kDeg)},
-       {"extrinsic_sigma_translation_m", sigmaOr(c.extrinsic_sigma.head<3>().maxCoeff())}});
+       {"extrinsic_sigma_translation_m", sigmaOr(c.extrinsic_sigma.head<3>().maxCoeff())},
+       {"time_offset_free_keyframes", double(free_keyframes_[0])},
+       {"extrinsic_free_keyframes", double(free_keyframes_[1])}});
 }
 
 }  // namespace dynslam::estimator

@@ -16,6 +16,7 @@ SlidingWindow::SlidingWindow(const SlidingWindowParams& params, const PinholeCam
     throw std::invalid_argument("SlidingWindow: window_size must be >= 2");
   poseToBlock(T_body_camera, extrinsic_);
   time_offset_[0] = params_.calibration.time_offset_s;
+  Eigen::Map<Eigen::Vector3d>{gravity_} = params_.gravity;
 }
 
 Eigen::Isometry3d SlidingWindow::extrinsic() const { return poseFromBlock(extrinsic_); }
@@ -39,6 +40,26 @@ bool SlidingWindow::estimatesTimeOffset() const {
 
 bool SlidingWindow::estimatesExtrinsic() const {
   return params_.use_imu && params_.calibration.estimate_extrinsic != ExtrinsicEstimation::None;
+}
+
+bool SlidingWindow::timeOffsetFree() const {
+  return estimatesTimeOffset() && excitation_.observesTimeOffset(params_.calibration.excitation);
+}
+
+bool SlidingWindow::extrinsicFree() const {
+  return estimatesExtrinsic() && excitation_.observesExtrinsic(params_.calibration.excitation);
+}
+
+void SlidingWindow::updateExcitation() {
+  std::vector<KeyframeMotion> motion;
+  for (const Keyframe& k : keyframes_) {
+    KeyframeMotion m;
+    m.q_world_body = Eigen::Quaterniond(poseFromBlock(k.pose).rotation());
+    m.velocity_world = Eigen::Vector3d(k.speed_bias);
+    m.angular_velocity_body = k.angular_velocity;
+    motion.push_back(m);
+  }
+  excitation_ = measureExcitation(motion);
 }
 
 SlidingWindow::~SlidingWindow() = default;
@@ -170,6 +191,8 @@ void SlidingWindow::switchToImu(const ImuInitialization& init) {
     }
   }
   params_.gravity = init.gravity_world;
+  Eigen::Map<Eigen::Vector3d>{gravity_} = init.gravity_world;
+  camera_anchor_.reset();  // the next solve anchors the gauge again
   prior_ = {};
   params_.use_imu = true;
 }

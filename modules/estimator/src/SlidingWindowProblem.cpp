@@ -6,6 +6,7 @@
 #include "dynslam/estimator/Marginalizer.h"
 #include "dynslam/estimator/StateBlocks.h"
 #include "dynslam/estimator/factors/CalibrationPriorFactor.h"
+#include "dynslam/estimator/factors/CameraPosePriorFactor.h"
 #include "dynslam/estimator/factors/GnssPositionFactor.h"
 #include "dynslam/estimator/factors/GyroRotationFactor.h"
 #include "dynslam/estimator/factors/ImuFactor.h"
@@ -37,8 +38,13 @@ using FactorSink = std::function<void(std::shared_ptr<const ceres::CostFunction>
 /// (for its marginalisation), so the two cannot disagree on what the graph holds.
 class SlidingWindow::ProblemBuilder {
  public:
-  ProblemBuilder(SlidingWindow& w)
-      : w_(w), huber_(w.params_.huber_sigmas), gnss_huber_(w.params_.gnss_huber_sigmas) {}
+  /// `free_calibration`: every estimated calibration state free, also where the window's motion
+  /// holds it (for its covariance).
+  explicit ProblemBuilder(SlidingWindow& w, bool free_calibration = false)
+      : w_(w),
+        huber_(w.params_.huber_sigmas),
+        gnss_huber_(w.params_.gnss_huber_sigmas),
+        free_calibration_(free_calibration) {}
 
   /// `only`: a keyframe id, or -1 for every factor. Returns the landmarks given factors, and in
   /// `objects` the rigid objects given factors.
@@ -57,8 +63,8 @@ class SlidingWindow::ProblemBuilder {
       Keyframe& b = w_.keyframes_[k];
       if (w_.params_.use_imu && b.preintegration) {
         if (only < 0 || only == a.id || only == b.id)
-          sink(std::make_shared<ImuFactor>(b.preintegration, w_.params_.gravity), nullptr,
-               {a.pose, a.speed_bias, b.pose, b.speed_bias});
+          sink(std::make_shared<ImuFactor>(b.preintegration), nullptr,
+               {a.pose, a.speed_bias, b.pose, b.speed_bias, w_.gravity_});
       } else if (!w_.params_.use_imu) {
         if (k >= 2) {
           Keyframe& z = w_.keyframes_[k - 2];
@@ -84,6 +90,12 @@ class SlidingWindow::ProblemBuilder {
                                                   k.gnss->covariance),
              &gnss_huber_, {k.pose});
     if (w_.prior_.factor) sink(w_.prior_.factor, nullptr, w_.prior_.blocks);
+    // The gauge by the first keyframe's camera (CameraPosePriorFactor.h), marginalised with it.
+    if (w_.camera_anchor_ && (only < 0 || only == w_.keyframes_.front().id)) {
+      constexpr double kAnchorSigma = 1e-5;  // m and rad: held, as a constant pose would be
+      sink(std::make_shared<CameraPosePriorFactor>(*w_.camera_anchor_, kAnchorSigma, kAnchorSigma),
+           nullptr, {w_.keyframes_.front().pose, w_.extrinsic_});
+    }
     if (only < 0) calibrationPriors(sink);
     return landmarks;
   }
@@ -97,9 +109,16 @@ class SlidingWindow::ProblemBuilder {
       if (w_.params_.use_imu) problem.AddParameterBlock(k.speed_bias, 9);
     }
     problem.AddParameterBlock(w_.extrinsic_, 7, &manifold);
-    if (!w_.estimatesExtrinsic()) problem.SetParameterBlockConstant(w_.extrinsic_);
+    if (!(free_calibration_ ? w_.estimatesExtrinsic() : w_.extrinsicFree()))
+      problem.SetParameterBlockConstant(w_.extrinsic_);
+    if (w_.params_.use_imu) {
+      problem.AddParameterBlock(w_.gravity_, 3, &sphere_);  // its norm stays the initializer's
+      if (!(free_calibration_ ? w_.estimatesExtrinsic() : w_.gravityFree()))
+        problem.SetParameterBlockConstant(w_.gravity_);
+    }
     problem.AddParameterBlock(w_.time_offset_, 1);
-    if (!w_.estimatesTimeOffset()) problem.SetParameterBlockConstant(w_.time_offset_);
+    if (!(free_calibration_ ? w_.estimatesTimeOffset() : w_.timeOffsetFree()))
+      problem.SetParameterBlockConstant(w_.time_offset_);
     std::set<const double*> objectPoses;  // pose blocks too: they need the manifold
     for (auto& [id, o] : w_.objects_.all())
       for (auto& [kf, L] : o.poses) objectPoses.insert(L.data());
@@ -128,7 +147,8 @@ class SlidingWindow::ProblemBuilder {
         problem.SetParameterLowerBound(&l.inverse_depth, 0, 1e-3);
     // Gauge: without a prior the first keyframe is held (with an IMU, roll and pitch would be
     // observable, but yaw and position are not).
-    if (!w_.prior_.factor) problem.SetParameterBlockConstant(w_.keyframes_.front().pose);
+    if (!w_.prior_.factor && !w_.camera_anchor_)
+      problem.SetParameterBlockConstant(w_.keyframes_.front().pose);
     return report;
   }
 
@@ -260,6 +280,8 @@ class SlidingWindow::ProblemBuilder {
   SlidingWindow& w_;
   ceres::HuberLoss huber_;
   ceres::HuberLoss gnss_huber_;
+  const bool free_calibration_;
+  ceres::SphereManifold<3> sphere_;
 };
 
 void SlidingWindow::repropagatePreintegrations() {
@@ -284,6 +306,11 @@ static ceres::Problem::Options unownedProblemOptions() {
 SolveReport SlidingWindow::solve() {
   // Bias estimates that moved far from a preintegration's linearisation point: integrate again.
   if (params_.use_imu) repropagatePreintegrations();
+  updateExcitation();
+  // With the extrinsic estimated, the window's gauge is the first keyframe's camera, as the
+  // first solve after the last prior-free start has it.
+  if (!prior_.factor && !camera_anchor_ && estimatesExtrinsic() && !keyframes_.empty())
+    camera_anchor_ = poseFromBlock(keyframes_.front().pose) * extrinsic();
   ceres::Problem problem(unownedProblemOptions());
   PoseManifold manifold;
   std::vector<std::shared_ptr<const ceres::CostFunction>> keep;  // alive until Solve returns
@@ -314,16 +341,18 @@ void SlidingWindow::marginalizeOldest() {
   Keyframe& oldest = keyframes_.front();
   Marginalizer marginalizer;
   for (auto& k : keyframes_) marginalizer.setPoseBlock(k.pose);
-  if (estimatesExtrinsic())
+  // As the last solve had them: a state its motion held stays out of the prior.
+  if (extrinsicFree())
     marginalizer.setPoseBlock(extrinsic_);
   else
     marginalizer.setConstantBlock(extrinsic_);
-  if (!estimatesTimeOffset()) marginalizer.setConstantBlock(time_offset_);
+  if (!timeOffsetFree()) marginalizer.setConstantBlock(time_offset_);
+  if (!gravityFree()) marginalizer.setConstantBlock(gravity_);
   // The first marginalisation: the solves held the oldest pose fixed (the gauge), so the prior
   // is conditioned on it rather than eliminating it; otherwise the prior would carry no absolute
   // information and the window would drift in the unobservable directions (VINS-Fusion instead
   // moves the whole window back after each solve).
-  if (!prior_.factor) marginalizer.setConstantBlock(oldest.pose);
+  if (!prior_.factor && !camera_anchor_) marginalizer.setConstantBlock(oldest.pose);
   ProblemBuilder builder(*this);
   std::set<const double*> leaving = {oldest.pose, oldest.speed_bias};
   builder.forEachFactor(
@@ -339,6 +368,7 @@ void SlidingWindow::marginalizeOldest() {
     }
   const auto prior = marginalizer.marginalize(leaving);
   prior_ = {prior.factor, prior.blocks};
+  camera_anchor_.reset();  // in the prior now, with the keyframe it held
 
   // Landmarks anchored at the oldest keyframe move to their next keyframe.
   landmarks_.removeKeyframe(oldest.id, [&](const Landmark& l, std::int64_t next) {
@@ -364,7 +394,7 @@ CalibrationEstimate SlidingWindow::calibration(bool with_sigma) {
   ceres::Problem problem(unownedProblemOptions());
   PoseManifold manifold;
   std::vector<std::shared_ptr<const ceres::CostFunction>> keep;
-  ProblemBuilder builder(*this);
+  ProblemBuilder builder(*this, /*free_calibration=*/true);
   builder.fill(problem, manifold, keep);
   std::vector<std::pair<const double*, const double*>> blocks;
   if (td) blocks.emplace_back(time_offset_, time_offset_);

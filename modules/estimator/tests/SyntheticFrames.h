@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -52,19 +53,25 @@ struct RoomPath {
   }
 };
 
-/// A path along which the camera-IMU time offset and the extrinsic rotation are unobservable:
-/// constant velocity, no rotation.
+/// A path along which the camera-IMU time offset and the extrinsic rotation are unobservable
+/// after the first kStart s: no rotation at all, and a constant velocity once the start (one
+/// period of a sine in the velocity, accelerations up to 0.8 m/s^2, enough to initialize the
+/// IMU) is over.
 struct StraightPath {
-  static Eigen::Vector3d velocity(double) { return {0.3, 0.0, 0.05}; }
+  static constexpr double kStart = 3.0;
+  static Eigen::Vector3d cruise() { return {0.3, 0.0, 0.05}; }
+  static Eigen::Vector3d swing() { return {0.3, 0.15, 0.25}; }
+  static double phase(double t) { return 2 * M_PI * std::min(t, kStart) / kStart; }
   static Eigen::Isometry3d pose(double t) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.translation() = t * velocity(t);
+    T.translation() = t * cruise() + kStart / (2 * M_PI) * (1 - std::cos(phase(t))) * swing();
     return T;
   }
   static core::ImuSample imuAt(double t) {
     core::ImuSample s;
     s.t = t;
-    s.acc = Eigen::Vector3d(0, -9.81, 0);
+    const double a = t < kStart ? 2 * M_PI / kStart * std::cos(phase(t)) : 0.0;
+    s.acc = a * swing() - Eigen::Vector3d(0, 9.81, 0);
     s.has_gyro = s.has_acc = true;
     return s;
   }

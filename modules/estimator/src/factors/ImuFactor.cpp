@@ -32,9 +32,8 @@ Eigen::Matrix4d quatRight(const Eigen::Quaterniond& q) {
 
 }  // namespace
 
-ImuFactor::ImuFactor(std::shared_ptr<const ImuPreintegration> preintegration,
-                     const Eigen::Vector3d& gravity)
-    : preintegration_(std::move(preintegration)), gravity_(gravity) {
+ImuFactor::ImuFactor(std::shared_ptr<const ImuPreintegration> preintegration)
+    : preintegration_(std::move(preintegration)) {
   const Matrix15d information = preintegration_->covariance().inverse();
   if (!information.allFinite())
     throw std::invalid_argument("ImuFactor: the preintegrated covariance is singular");
@@ -51,13 +50,14 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals,
   const Eigen::Quaterniond q_j(parameters[2][6], parameters[2][3], parameters[2][4],
                                parameters[2][5]);
   const Eigen::Vector3d v_j(parameters[3]), ba_j(parameters[3] + 3), bg_j(parameters[3] + 6);
+  const Eigen::Vector3d gravity(parameters[4]);
 
   const ImuPreintegration& pre = *preintegration_;
   const double T = pre.sumDt();
   const Eigen::Matrix3d Ri_T = q_i.toRotationMatrix().transpose();
   const Eigen::Quaterniond gamma = pre.deltaRotation(bg_i);
-  const Eigen::Vector3d dp_world = p_j - p_i - v_i * T - 0.5 * gravity_ * T * T;
-  const Eigen::Vector3d dv_world = v_j - v_i - gravity_ * T;
+  const Eigen::Vector3d dp_world = p_j - p_i - v_i * T - 0.5 * gravity * T * T;
+  const Eigen::Vector3d dv_world = v_j - v_i - gravity * T;
 
   Eigen::Map<Eigen::Matrix<double, 15, 1>> r(residuals);
   r.segment<3>(kP) = Ri_T * dp_world - pre.deltaPosition(ba_i, bg_i);
@@ -73,6 +73,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals,
   if (jacobians[1]) speedBiasJacobianI(at, jacobians[1]);
   if (jacobians[2]) poseJacobianJ(at, jacobians[2]);
   if (jacobians[3]) speedBiasJacobianJ(at, jacobians[3]);
+  if (jacobians[4]) gravityJacobian(at, jacobians[4]);
   return true;
 }
 
@@ -130,6 +131,14 @@ void ImuFactor::speedBiasJacobianJ(const Linearisation& at, double* jacobian) co
   Js.block<3, 3>(kBa, 3) = I;
   Js.block<3, 3>(kBg, 6) = I;
   Js = sqrt_information_ * Js;
+}
+
+void ImuFactor::gravityJacobian(const Linearisation& at, double* jacobian) const {
+  Eigen::Map<Eigen::Matrix<double, 15, 3, Eigen::RowMajor>> Jg(jacobian);
+  Jg.setZero();
+  Jg.block<3, 3>(kP, 0) = -0.5 * at.T * at.T * at.Ri_T;
+  Jg.block<3, 3>(kV, 0) = -at.T * at.Ri_T;
+  Jg = sqrt_information_ * Jg;
 }
 
 }  // namespace dynslam::estimator

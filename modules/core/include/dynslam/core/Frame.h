@@ -67,6 +67,10 @@ struct KeyframeRecord {
   double time_offset = 0;
   Eigen::Vector3d extrinsic_rotation_change = Eigen::Vector3d::Zero();
   Eigen::Vector3d extrinsic_translation_change = Eigen::Vector3d::Zero();
+  /// Whether the solve estimated each (estimated, and the window's motion observes it), or held
+  /// it where it was.
+  bool time_offset_free = false;
+  bool extrinsic_free = false;
 };
 
 struct Frame {

@@ -99,7 +99,9 @@ class EstimatorStage : public core::Stage {
   /// time_offset_s and time_offset_sigma_s, extrinsic_x/y/z (m) and extrinsic_roll/pitch/yaw
   /// (deg, of T_imu_camera), extrinsic_rotation_change_deg and extrinsic_translation_change_m
   /// from the configured value, extrinsic_sigma_rotation_deg and
-  /// extrinsic_sigma_translation_m (largest axis); a sigma is -1 when not estimated.
+  /// extrinsic_sigma_translation_m (largest axis); a sigma is -1 when not estimated;
+  /// time_offset_free_keyframes and extrinsic_free_keyframes: keyframes whose solve estimated
+  /// each (the others held it: CalibrationExcitation.h).
   std::vector<std::pair<std::string, double>> statistics() const override;
 
   const EstimatorOptions& options() const { return options_; }
@@ -166,6 +168,7 @@ class EstimatorStage : public core::Stage {
   EstimatorOptions options_;
   std::optional<Eigen::Isometry3d> camera_in_imu_;  // options_.camera_in_imu, parsed
   CalibrationEstimate final_calibration_;           // finish(): with standard deviations
+  int free_keyframes_[2] = {0, 0};  // keyframes whose solve estimated t_d / the extrinsic
   std::unique_ptr<SlidingWindow> window_;
   std::unique_ptr<KeyframeImu> imu_;
   std::unique_ptr<GnssAnchor> gnss_;

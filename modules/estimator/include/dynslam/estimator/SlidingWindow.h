@@ -38,6 +38,8 @@
 #include <dynslam/estimator/factors/PinholeProjection.h>
 #include <dynslam/estimator/imu/ImuPreintegration.h>
 
+#include "dynslam/estimator/CalibrationExcitation.h"
+
 #include <Eigen/Geometry>
 
 #include <cstdint>
@@ -65,6 +67,8 @@ struct CalibrationParams {
   ExtrinsicEstimation estimate_extrinsic = ExtrinsicEstimation::None;
   double extrinsic_sigma_translation_m = 0.02;
   double extrinsic_sigma_rotation_deg = 3.0;
+  /// Each estimated state is held (constant) while the window's motion does not observe it.
+  ExcitationThresholds excitation;
 };
 
 /// What the window's calibration states hold, and their standard deviations (NaN when not
@@ -187,8 +191,9 @@ class SlidingWindow {
   /// gauge again.
   void switchToImu(const ImuInitialization& init);
   bool usesImu() const { return params_.use_imu; }
-  /// The world gravity vector the IMU factors use.
-  const Eigen::Vector3d& gravity() const { return params_.gravity; }
+  /// The world gravity vector the IMU factors use: the IMU initialization's, re-estimated with
+  /// the camera-IMU rotation while that is (gravityFree).
+  Eigen::Vector3d gravity() const { return Eigen::Vector3d(gravity_); }
 
   /// The calibration states now (CalibrationParams): the extrinsic and time offset every factor
   /// uses. `with_sigma`: also their standard deviations from the last solve's problem (Ceres'
@@ -198,6 +203,16 @@ class SlidingWindow {
   /// The configured T_body_camera the window started from (the extrinsic prior's mean).
   const Eigen::Isometry3d& extrinsicPrior() const { return extrinsic_prior_; }
   double timeOffset() const { return time_offset_[0]; }
+  /// The last solve's motion (CalibrationExcitation.h), and whether it freed each estimated
+  /// calibration state (false when not estimated).
+  const CalibrationExcitation& excitation() const { return excitation_; }
+  bool timeOffsetFree() const;
+  bool extrinsicFree() const;
+  /// The initialization found the world gravity through the configured camera-IMU rotation:
+  /// when that rotation is estimated, a gravity held fixed would keep its error, and the camera's
+  /// poses would turn by the rotation's correction (2 deg on indoor_people_high,
+  /// docs/notes/calibration.md). So the two are estimated together.
+  bool gravityFree() const { return extrinsicFree(); }
   /// A restarted window goes on from the last window's calibration (the priors keep their
   /// configured means).
   void continueCalibration(const Eigen::Isometry3d& T_body_camera, double time_offset_s);
@@ -260,6 +275,8 @@ class SlidingWindow {
   bool calibrationSettling() const;
   bool estimatesTimeOffset() const;
   bool estimatesExtrinsic() const;
+  /// excitation_ from the keyframes' current states, before a solve.
+  void updateExcitation();
   void repropagatePreintegrations();
   void marginalizeOldest();
   Eigen::Vector3d landmarkWorld(const Landmark& l) const;
@@ -278,6 +295,11 @@ class SlidingWindow {
   PinholeCamera camera_;
   double extrinsic_[7];
   double time_offset_[1];
+  double gravity_[3];  // the world gravity vector (ImuFactor's fifth block)
+  // The first keyframe's camera pose holding the gauge while the extrinsic is estimated and
+  // there is no prior yet (CameraPosePriorFactor.h); marginalised with that keyframe.
+  std::optional<Eigen::Isometry3d> camera_anchor_;
+  CalibrationExcitation excitation_;
   int imu_keyframes_ = 0;              // keyframes added since the window turned visual-inertial
   Eigen::Isometry3d extrinsic_prior_;  // the configured T_body_camera, the prior's mean
   std::deque<Keyframe> keyframes_;
