@@ -6,13 +6,15 @@
 # full dynamic handling, repeatable solves (max_solver_time = 100).
 #
 #   bash bench/calibration.sh [--seeds "1 2"] [--scenarios "a b"] [--duration S] [--out DIR]
-#                             [--build DIR] [--jobs N] [--report-only]
+#                             [--build DIR] [--jobs N] [--keep-renders] [--report-only]
 #     --seeds "A B"       Scenario.seed values (default "1")
 #     --scenarios "a b"   scenarios of params/sim/ (default indoor_people_high outdoor_street_high)
 #     --duration S        seconds rendered (default 20)
 #     --out DIR           work folder (default /tmp/dynslam-calibration): renders, runs, rows.tsv
 #     --build DIR         the build folder whose bin/ holds the programs (default build/)
 #     --jobs N            renders and runs side by side (default 2)
+#     --keep-renders      keep each render's rawlog and images after the runs (about 0.6 GB a
+#                         render, 16 a seed; by default only the ground truth and the runs stay)
 #     --report-only       print the table from the runs already in the work folder
 #     -h, --help          this text
 # Prints one row per scenario and seed and writes OUT/rows.tsv. Columns: ape_exact (m, SE(3);
@@ -27,7 +29,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=bench/lib.sh
 source "$ROOT/bench/lib.sh"
 SEEDS="1"; SCENARIOS="indoor_people_high outdoor_street_high"; DURATION=20
-OUT=/tmp/dynslam-calibration; BUILD="$ROOT/build"; JOBS=2; REPORT_ONLY=0
+OUT=/tmp/dynslam-calibration; BUILD="$ROOT/build"; JOBS=2; REPORT_ONLY=0; KEEP_RENDERS=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --seeds) SEEDS="$2"; shift 2 ;;
@@ -36,6 +38,7 @@ while [ $# -gt 0 ]; do
     --out) OUT="$2"; shift 2 ;;
     --build) BUILD="$(realpath -m "$2")"; shift 2 ;;
     --jobs) JOBS="$2"; shift 2 ;;
+    --keep-renders) KEEP_RENDERS=1; shift ;;
     --report-only) REPORT_ONLY=1; shift ;;
     -h | --help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     *) echo "calibration.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
@@ -108,6 +111,13 @@ for seed in $SEEDS; do for sc in $SCENARIOS; do
   while IFS=: read -r r name settings; do echo "run $seed $sc $r $name $settings"; done <<< "$RUNS"
 done; done | sed 's/ *$//' > "$OUT/run.jobs"
 xargs -P "$JOBS" -L 1 bash -c '"$@"' _ < "$OUT/run.jobs"
+# The renders' rawlogs and images (six seeds fill 55 GB); the next run renders them again.
+[ "$KEEP_RENDERS" = 1 ] || for seed in $SEEDS; do for sc in $SCENARIOS; do
+  while IFS=: read -r name settings; do
+    S="$OUT/seed$seed/$sc/$name"
+    rm -rf "$S/sim.rawlog" "$S/sim_Images" "$S/labels" "$S/.rendered"
+  done <<< "$RENDERS"
+done; done
 }
 
 ape() { jsonField "$1/ape.json" rmse 2>/dev/null || echo -; }
