@@ -51,6 +51,7 @@ bool SlidingWindow::extrinsicFree() const {
 }
 
 void SlidingWindow::updateExcitation() {
+  if (!(estimatesTimeOffset() || estimatesExtrinsic())) return;  // nothing it would free
   std::vector<KeyframeMotion> motion;
   for (const Keyframe& k : keyframes_) {
     KeyframeMotion m;
@@ -190,7 +191,6 @@ void SlidingWindow::switchToImu(const ImuInitialization& init) {
       kf.speed_bias[6 + i] = init.gyro_bias(i);
     }
   }
-  params_.gravity = init.gravity_world;
   Eigen::Map<Eigen::Vector3d>{gravity_} = init.gravity_world;
   camera_anchor_.reset();  // the next solve anchors the gauge again
   prior_ = {};

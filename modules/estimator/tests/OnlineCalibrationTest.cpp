@@ -108,13 +108,9 @@ Drift driftOnAStraightLine(const std::string& extra) {
   }
   if (!first) return out;
   out.time_offset_ms = 1e3 * (last->time_offset - first->time_offset);
-  const Eigen::Matrix3d from = Eigen::AngleAxisd(first->extrinsic_rotation_change.norm(),
-                                                 first->extrinsic_rotation_change.normalized())
-                                   .matrix();
-  const Eigen::Matrix3d to = Eigen::AngleAxisd(last->extrinsic_rotation_change.norm(),
-                                               last->extrinsic_rotation_change.normalized())
-                                 .matrix();
-  out.rotation_deg = Eigen::AngleAxisd(from.transpose() * to).angle() * 180 / M_PI;
+  const Eigen::Quaterniond from = quaternionExp(first->extrinsic_rotation_change);
+  const Eigen::Quaterniond to = quaternionExp(last->extrinsic_rotation_change);
+  out.rotation_deg = from.angularDistance(to) * 180 / M_PI;
   return out;
 }
 
@@ -168,11 +164,8 @@ TEST(OnlineCalibration, AWrongExtrinsicRotationIsRecoveredWithoutTurningTheCamer
     sum_sq += camera_deg * camera_deg;
     ++frames;
     if (!f.keyframe) continue;
-    const Eigen::Vector3d change = f.keyframe->extrinsic_rotation_change;
     const Eigen::Matrix3d estimated =
-        believed * (change.norm() > 0
-                        ? Eigen::AngleAxisd(change.norm(), change.normalized()).matrix()
-                        : Eigen::Matrix3d::Identity());
+        believed * quaternionExp(f.keyframe->extrinsic_rotation_change).toRotationMatrix();
     left_deg = Eigen::AngleAxisd(estimated).angle() * 180 / M_PI;  // the truth: identity
   }
   const double rms_camera_deg = std::sqrt(sum_sq / frames);

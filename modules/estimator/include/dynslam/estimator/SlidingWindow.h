@@ -101,7 +101,8 @@ struct SlidingWindowParams {
   bool transferred_depth = true;
   bool use_imu = true;  ///< false: RGB-D only, motion prior between keyframes
   ImuNoise imu_noise;
-  Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< world gravity of the IMU factors
+  /// The world gravity the IMU factors start from (the window then holds it: gravity()).
+  Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
   double motion_prior_sigma_translation = 0.1, motion_prior_sigma_rotation = 0.05;
   /// > 0: while the window has no IMU factors but the keyframes carry preintegrations (IMU not
   /// yet initialized, or a restart), GyroRotationFactor between consecutive keyframes. Not the
@@ -203,9 +204,8 @@ class SlidingWindow {
   /// The configured T_body_camera the window started from (the extrinsic prior's mean).
   const Eigen::Isometry3d& extrinsicPrior() const { return extrinsic_prior_; }
   double timeOffset() const { return time_offset_[0]; }
-  /// The last solve's motion (CalibrationExcitation.h), and whether it freed each estimated
-  /// calibration state (false when not estimated).
-  const CalibrationExcitation& excitation() const { return excitation_; }
+  /// Whether the last solve's motion (CalibrationExcitation.h) freed each estimated calibration
+  /// state (false when not estimated).
   bool timeOffsetFree() const;
   bool extrinsicFree() const;
   /// The initialization found the world gravity through the configured camera-IMU rotation:
