@@ -87,19 +87,9 @@ render() {  # seed scenario name settings...
 
 run() {  # seed scenario render name settings...
   local seed="$1" sc="$2" r="$3" name="$4"; shift 4
-  local S="$OUT/seed$seed/$sc/$r" R="$OUT/seed$seed/$sc/$r/run_$name"
-  rm -rf "$R"; mkdir -p "$R"
-  # shellcheck disable=SC2046,SC2068
-  "$B/dynslam" --config "$ROOT/params/sim_vio.ini" --rawlog "$S/sim.rawlog" --out "$R" --quiet \
-    --no-map --set Detection.objects="$S/objects.txt" --set Detection.seed="$seed" \
-    --set Estimator.max_solver_time=100 $(variantSettings full) $@ > "$R.log" 2>&1 || true
-  # Aligned on the first pose where the path is too straight for Umeyama (the street).
-  "$B/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align se3 --json "$R/ape.json" \
-    >> "$R.log" 2>&1 ||
-    "$B/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align-origin \
-      --json "$R/ape.json" >> "$R.log" 2>&1 || true
+  simVioRun "$OUT/seed$seed/$sc/$r" "$OUT/seed$seed/$sc/$r/run_$name" "$seed" "$@"
 }
-export -f render run variantSettings
+export -f render run simVioRun variantSettings
 export B OUT ROOT DURATION
 
 [ "$REPORT_ONLY" = 1 ] || {

@@ -20,3 +20,21 @@ variantSettings() {
     *) echo "variantSettings: unknown variant '$1'" >&2; return 1 ;;
   esac
 }
+
+# simVioRun RENDER RUN SEED [SETTINGS...]: dynslam on a simulator render (params/sim_vio.ini, the
+# ground-truth detector, full dynamic handling, repeatable solves: max_solver_time = 100) into
+# the fresh folder RUN (its log RUN.log), then its APE into RUN/ape.json: SE(3)-aligned, or on the
+# first pose where the path is too straight for Umeyama (the street). Needs B (the programs'
+# folder) and ROOT. Never fails: a failed run leaves no ape.json.
+simVioRun() {
+  local S="$1" R="$2" seed="$3"; shift 3
+  rm -rf "$R"; mkdir -p "$R"
+  # shellcheck disable=SC2046,SC2068
+  "$B/dynslam" --config "$ROOT/params/sim_vio.ini" --rawlog "$S/sim.rawlog" --out "$R" --quiet \
+    --no-map --set Detection.objects="$S/objects.txt" --set Detection.seed="$seed" \
+    --set Estimator.max_solver_time=100 $(variantSettings full) $@ > "$R.log" 2>&1 || true
+  "$B/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align se3 --json "$R/ape.json" \
+    >> "$R.log" 2>&1 ||
+    "$B/dynslam-eval" ape "$S/groundtruth.tum" "$R/trajectory.tum" --align-origin \
+      --json "$R/ape.json" >> "$R.log" 2>&1 || true
+}

@@ -14,6 +14,8 @@ constexpr core::Keyword<ExtrinsicEstimation> kExtrinsicModes[] = {
     {"none", ExtrinsicEstimation::None},
     {"rotation", ExtrinsicEstimation::Rotation},
     {"full", ExtrinsicEstimation::Full}};
+constexpr core::Keyword<LandmarkReanchoring> kReanchorings[] = {
+    {"next", LandmarkReanchoring::Next}, {"newest", LandmarkReanchoring::Newest}};
 
 }  // namespace
 
@@ -129,6 +131,11 @@ void EstimatorOptions::describeWindow(core::OptionVisitor& v) {
   v.key("transferred_depth", w.transferred_depth,
         "depth measured in later keyframes constrains them too (not the method: the first "
         "observation's only)");
+  v.key("landmark_reanchoring", w.landmark_reanchoring, kReanchorings,
+        "a landmark anchored at the keyframe leaving the window (its factors go into the "
+        "marginalisation prior): next: anchored at its next observation, the others used again "
+        "(VINS-Fusion; the prior already holds them); newest: anchored at its newest "
+        "observation, the ones before dropped (no measurement counted twice)");
   v.key("motion_prior_sigma_translation", w.motion_prior_sigma_translation, positive,
         "m per keyframe interval; RGB-D-only constant-motion prior");
   v.key("motion_prior_sigma_rotation", w.motion_prior_sigma_rotation, positive,

@@ -370,13 +370,16 @@ void SlidingWindow::marginalizeOldest() {
   prior_ = {prior.factor, prior.blocks};
   camera_anchor_.reset();  // in the prior now, with the keyframe it held
 
-  // Landmarks anchored at the oldest keyframe move to their next keyframe.
-  landmarks_.removeKeyframe(oldest.id, [&](const Landmark& l, std::int64_t next) {
-    const Eigen::Vector3d world = landmarkWorld(l);
-    const Keyframe* k = keyframe(next);
-    const double z = depthIn(*k, world);
-    return z > kMinLandmarkDepth ? 1.0 / z : 1.0 / 3.0;
-  });
+  // Landmarks anchored at the oldest keyframe move their anchor (LandmarkReanchoring).
+  landmarks_.removeKeyframe(
+      oldest.id,
+      [&](const Landmark& l, std::int64_t next) {
+        const Eigen::Vector3d world = landmarkWorld(l);
+        const Keyframe* k = keyframe(next);
+        const double z = depthIn(*k, world);
+        return z > kMinLandmarkDepth ? 1.0 / z : 1.0 / 3.0;
+      },
+      params_.landmark_reanchoring == LandmarkReanchoring::Newest);
   // The objects' poses and observations there are dropped (SlidingWindow.h).
   objects_.removeKeyframe(oldest.id);
   // Non-rigid points first seen in the oldest keyframe went into the prior with it.

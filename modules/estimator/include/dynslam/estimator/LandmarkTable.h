@@ -33,18 +33,24 @@ class LandmarkTable {
                double default_depth);
 
   /// Drops every observation in keyframe `keyframe` (it left the window). Landmarks anchored
-  /// there move their anchor to their next observation, with `reanchor(landmark, new anchor)`
-  /// giving the inverse depth there from the current estimate; landmarks with no observation
-  /// left are deleted.
+  /// there move their anchor, with `reanchor(landmark, new anchor)` giving the inverse depth
+  /// there from the current estimate: to their next observation, keeping the others, or with
+  /// `restart` to their newest, dropping the others (LandmarkReanchoring in SlidingWindow.h).
+  /// Landmarks with no observation left are deleted.
   template <typename Reanchor>
-  void removeKeyframe(std::int64_t keyframe, Reanchor reanchor) {
+  void removeKeyframe(std::int64_t keyframe, Reanchor reanchor, bool restart = false) {
     for (auto it = landmarks_.begin(); it != landmarks_.end();) {
       Landmark& l = it->second;
       if (l.anchor == keyframe && l.observations.size() > 1) {
         // The new anchor's inverse depth comes from the old anchor, so before erasing it.
-        const std::int64_t next = std::next(l.observations.begin())->first;
+        const std::int64_t next = restart ? std::prev(l.observations.end())->first
+                                          : std::next(l.observations.begin())->first;
         l.inverse_depth = reanchor(l, next);
         l.anchor = next;
+        if (restart) {
+          const LandmarkObservation newest = l.observations.at(next);
+          l.observations = {{next, newest}};
+        }
       }
       l.observations.erase(keyframe);
       if (l.observations.empty()) {

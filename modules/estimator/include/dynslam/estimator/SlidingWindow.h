@@ -55,6 +55,13 @@ namespace dynslam::estimator {
 
 enum class ExtrinsicEstimation { None, Rotation, Full };
 
+/// What becomes of a static landmark anchored at the keyframe that leaves the window; all its
+/// factors went into the marginalisation prior with that keyframe. Next: anchored at its next
+/// observation, its other observations in the window used again (VINS-Fusion), though the prior
+/// already holds them. Newest: anchored at its newest observation, the ones before dropped, so
+/// no measurement is counted twice (docs/notes/calibration.md, 2026-11-29 (later)).
+enum class LandmarkReanchoring { Next, Newest };
+
 /// Online camera-IMU calibration (VINS-Fusion's estimate_td and estimate_extrinsic): the time
 /// offset t_d (t_imu = t_camera + t_d, StaticReprojectionFactor.h) and the extrinsic
 /// T_body_camera become states of the window once it is visual-inertial, each held near its
@@ -99,6 +106,7 @@ struct SlidingWindowParams {
   double huber_sigmas = 2.0;
   DepthNoiseModel depth_noise;
   bool transferred_depth = true;
+  LandmarkReanchoring landmark_reanchoring = LandmarkReanchoring::Next;
   bool use_imu = true;  ///< false: RGB-D only, motion prior between keyframes
   ImuNoise imu_noise;
   /// The world gravity the IMU factors start from (the window then holds it: gravity()).
