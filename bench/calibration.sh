@@ -21,9 +21,10 @@
 # aligned on the first pose on the straight street), ape_exact_est (both estimates on) and their
 # ratio, the window solve median of each (ms); for a 20 ms offset: ape_td20 ignored, ape_td20_known
 # (configured), ape_td20_est (estimated) and the estimate at 10 s and at the end (ms); for true
-# offsets -30 -10 +10 +30 ms the estimate's error at 10 s (ms); for a 2 degree rotation error:
-# ape_rot2 as believed, ape_rot2_est (estimated, rotation only) and the rotation error left at the
-# end (deg); ape_jit2: the camera's stamps jittered by 2 ms (sigma) against the IMU.
+# offsets -30 -10 +10 +30 ms the estimate's error at 10 s and at the end (ms); for a 2 degree
+# rotation error: ape_rot2 as believed, ape_rot2_est (estimated, rotation only) and the rotation
+# error left at the end (deg); ape_jit2: the camera's stamps jittered by 2 ms (sigma) against the
+# IMU.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=bench/lib.sh
@@ -134,7 +135,7 @@ rotationLeft() {
 }
 
 {
-  printf 'seed\tscenario\tape_exact\tape_exact_est\tratio\tsolve_ms\tsolve_ms_est\tape_td20\tape_td20_known\tape_td20_est\ttd20_at10\ttd20_end\terr_m30\terr_m10\terr_p10\terr_p30\tape_rot2\tape_rot2_est\trot2_left_deg\tape_jit2\n'
+  printf 'seed\tscenario\tape_exact\tape_exact_est\tratio\tsolve_ms\tsolve_ms_est\tape_td20\tape_td20_known\tape_td20_est\ttd20_at10\ttd20_end\terr_m30\terr_m10\terr_p10\terr_p30\terr_m30_end\terr_m10_end\terr_p10_end\terr_p30_end\tape_rot2\tape_rot2_est\trot2_left_deg\tape_jit2\n'
   for seed in $SEEDS; do for sc in $SCENARIOS; do
     D="$OUT/seed$seed/$sc"
     e=$(ape "$D/exact/run_off"); ee=$(ape "$D/exact/run_est")
@@ -144,10 +145,10 @@ rotationLeft() {
     printf '\t%s\t%s\t%s\t%s\t%s' "$(ape "$D/td20/run_off")" "$(ape "$D/td20/run_known")" \
       "$(ape "$D/td20/run_est")" "$(tdAt "$D/td20/run_est/keyframes.csv" 10)" \
       "$(tdAt "$D/td20/run_est/keyframes.csv" end)"
-    for r in tdm30:-30 tdm10:-10 tdp10:10 tdp30:30; do
-      printf '\t%s' "$(awk -v a="$(tdAt "$D/${r%%:*}/run_est/keyframes.csv" 10)" -v b="${r##*:}" \
+    for at in 10 end; do for r in tdm30:-30 tdm10:-10 tdp10:10 tdp30:30; do
+      printf '\t%s' "$(awk -v a="$(tdAt "$D/${r%%:*}/run_est/keyframes.csv" "$at")" -v b="${r##*:}" \
         'BEGIN { printf "%.2f", a - b }')"
-    done
+    done; done
     printf '\t%s\t%s\t%s\t%s\n' "$(ape "$D/rot2/run_off")" "$(ape "$D/rot2/run_est")" \
       "$(rotationLeft "$D/rot2/calibration.txt" "$D/rot2/run_est/keyframes.csv")" \
       "$(ape "$D/jit2/run_off")"

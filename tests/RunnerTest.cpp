@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
 
 namespace fs = std::filesystem;
 using dynslam::testing::binDir;
@@ -252,6 +254,36 @@ TEST(Runner, RealtimePlaysAtCameraRateAndReportsTheDetectorThreadsRate) {
   const auto wall = summary.find("\"wall_time_s\": ");
   ASSERT_NE(wall, std::string::npos);
   EXPECT_GE(std::stod(summary.substr(wall + 15)), 14 / 30.0) << "paced at the stamps' rate";
+}
+
+// SIGTERM (kill, a job scheduler's time limit) ends a run as Ctrl-C does: the frames so far in
+// complete outputs, status "interrupted", exit 128 + the signal.
+TEST(Runner, SigtermAndCtrlCEndTheRunWithTheOutputsSoFar) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 90);  // 3 s of stream at 30 Hz
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  for (const auto& [signal, code] : {std::pair{"TERM", 143}, std::pair{"INT", 130}}) {
+    const std::string out = dir + "/out_" + signal;
+    // Paced at the stamps' rate (--realtime), signalled once 5 poses are written.
+    const auto r = runCommand(
+        "sh -c '" +
+        dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " + out +
+                       " --realtime --no-map") +
+        " & p=$!; for i in $(seq 200); do [ $(cat " + out +
+        "/trajectory.tum 2>/dev/null | wc -l) -ge 5 ] && break; sleep 0.05; done; kill -" + signal +
+        " $p; wait $p; echo exit $?'");
+    EXPECT_NE(r.output.find("exit " + std::to_string(code)), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(signal == std::string("TERM") ? "interrupted (SIGTERM)"
+                                                          : "interrupted (Ctrl-C)"),
+              std::string::npos)
+        << r.output;
+    const size_t lines = lineCount(out + "/trajectory.tum");
+    EXPECT_GE(lines, 5u);
+    EXPECT_LT(lines, 90u) << "stopped before the end";
+    EXPECT_EQ(dynslam::core::readTum(out + "/trajectory.tum").size(), lines) << "every line whole";
+    const std::string summary = readTextFile(out + "/summary.json");
+    EXPECT_NE(summary.find("\"status\": \"interrupted\""), std::string::npos) << summary;
+  }
 }
 
 TEST(Runner, FeatureTrackingAndTheEstimatorFollowTheSyntheticRoom) {

@@ -40,8 +40,10 @@ namespace fs = std::filesystem;
 namespace dynslam::runner {
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-extern "C" void onInterrupt(int) { g_interrupted = true; }
+/// The signal that interrupted the run (SIGINT: Ctrl-C; SIGTERM: kill, a job scheduler), 0 while
+/// none has: the run stops reading, finishes every output and exits with 128 + that signal.
+std::atomic<int> g_interrupted{0};
+extern "C" void onInterrupt(int signal) { g_interrupted = signal; }
 
 /// --realtime: hands frames over on the schedule their stamps give, and records the lag.
 class CameraRateClock {
@@ -242,6 +244,7 @@ class DynslamRun {
   void playFrames() {
     progress_.emplace(stderr, !args_.quiet && isatty(STDERR_FILENO) != 0);
     std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
     const auto enough = [&] {
       return args_.max_frames >= 0 && long(system_->framesProcessed()) >= args_.max_frames;
     };
@@ -294,7 +297,8 @@ class DynslamRun {
   void finishPlayback() {
     if (g_interrupted) {
       rec_.status = "interrupted";
-      std::cerr << "\ndynslam: interrupted; outputs hold the first " << rec_.frames << " frames\n";
+      std::cerr << "\ndynslam: interrupted (" << (g_interrupted == SIGTERM ? "SIGTERM" : "Ctrl-C")
+                << "); outputs hold the first " << rec_.frames << " frames\n";
     }
     if (!args_.quiet) progress_->finish(rec_.frames);
   }
@@ -362,7 +366,8 @@ class DynslamRun {
   }
 
   int exitCode() {
-    const int code = rec_.status == "failed" ? 1 : (rec_.status == "interrupted" ? 130 : 0);
+    const int code =
+        rec_.status == "failed" ? 1 : (rec_.status == "interrupted" ? 128 + g_interrupted : 0);
     if (live_) {
       // MRPT's window is not destroyed: closing CDisplayWindow3D while its wx thread still
       // draws corrupted the heap in about 1 run of 3 under Xvfb ("malloc(): unsorted double
