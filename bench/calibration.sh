@@ -77,20 +77,14 @@ jit2:off:"
 
 render() {  # seed scenario name settings...
   local seed="$1" sc="$2" name="$3"; shift 3
-  local S="$OUT/seed$seed/$sc/$name"
-  [ -f "$S/.rendered" ] && return 0
-  mkdir -p "$S"
-  # shellcheck disable=SC2068
-  "$B/dynslam-sim" --config "$ROOT/params/sim/$sc.ini" --out "$S" --quiet \
-    --set Scenario.seed="$seed" --set Scenario.duration="$DURATION" $@ > "$S.log" 2>&1 &&
-    touch "$S/.rendered"
+  simRender "$OUT/seed$seed/$sc/$name" "$sc" "$seed" "$@"
 }
 
 run() {  # seed scenario render name settings...
   local seed="$1" sc="$2" r="$3" name="$4"; shift 4
   simVioRun "$OUT/seed$seed/$sc/$r" "$OUT/seed$seed/$sc/$r/run_$name" "$seed" "$@"
 }
-export -f render run simVioRun variantSettings
+export -f render run simRender simVioRun variantSettings
 export B OUT ROOT DURATION
 
 [ "$REPORT_ONLY" = 1 ] || {

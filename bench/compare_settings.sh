@@ -47,18 +47,14 @@ cmake --build "$BUILD" -j2 --target dynslam dynslam-sim dynslam-eval > "$OUT/bui
   { echo "compare_settings.sh: the build failed, see $OUT/build.log" >&2; exit 1; }
 
 render() {  # seed scenario
-  local S="$OUT/seed$1/$2"
-  [ -f "$S/.rendered" ] && return 0
-  mkdir -p "$S"
-  "$B/dynslam-sim" --config "$ROOT/params/sim/$2.ini" --out "$S" --quiet \
-    --set Scenario.seed="$1" --set Scenario.duration="$DURATION" > "$S.log" 2>&1 && touch "$S/.rendered"
+  simRender "$OUT/seed$1/$2" "$2" "$1"
 }
 
 run() {  # seed scenario name settings...
   local seed="$1" sc="$2" name="$3"; shift 3
   simVioRun "$OUT/seed$seed/$sc" "$OUT/seed$seed/$sc/run_$name" "$seed" "$@"
 }
-export -f render run simVioRun variantSettings
+export -f render run simRender simVioRun variantSettings
 export B OUT ROOT DURATION
 
 for seed in $SEEDS; do for sc in $SCENARIOS; do echo "render $seed $sc"; done; done |
@@ -71,7 +67,7 @@ ape() { jsonField "$1/ape.json" rmse 2>/dev/null || true; }
 {
   printf 'seed\tscenario\tape_base\tape_variant\tratio\tsolve_ms_base\tsolve_ms_variant\n'
   for seed in $SEEDS; do for sc in $SCENARIOS; do
-    D="$OUT/seed$seed/$sc" a="" b=""
+    D="$OUT/seed$seed/$sc"
     a=$(ape "$D/run_base"); b=$(ape "$D/run_variant")
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$seed" "$sc" "${a:--}" "${b:--}" \
       "$(awk -v a="$a" -v b="$b" 'BEGIN { if (a > 0 && b > 0) printf "%.3f", b / a; else printf "-" }')" \

@@ -21,6 +21,19 @@ variantSettings() {
   esac
 }
 
+# simRender RENDER SCENARIO SEED [SETTINGS...]: dynslam-sim renders params/sim/SCENARIO.ini for
+# DURATION s into RENDER (its log RENDER.log), unless RENDER/.rendered says an earlier call did.
+# Needs B (the programs' folder), ROOT and DURATION.
+simRender() {
+  local S="$1" sc="$2" seed="$3"; shift 3
+  [ -f "$S/.rendered" ] && return 0
+  mkdir -p "$S"
+  # shellcheck disable=SC2068
+  "$B/dynslam-sim" --config "$ROOT/params/sim/$sc.ini" --out "$S" --quiet \
+    --set Scenario.seed="$seed" --set Scenario.duration="$DURATION" $@ > "$S.log" 2>&1 &&
+    touch "$S/.rendered"
+}
+
 # simVioRun RENDER RUN SEED [SETTINGS...]: dynslam on a simulator render (params/sim_vio.ini, the
 # ground-truth detector, full dynamic handling, repeatable solves: max_solver_time = 100) into
 # the fresh folder RUN (its log RUN.log), then its APE into RUN/ape.json: SE(3)-aligned, or on the
