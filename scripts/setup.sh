@@ -3,9 +3,10 @@
 # then configures and builds into build/. Safe to run again: a second run installs nothing and
 # rebuilds only what changed.
 #
-#   bash scripts/setup.sh [TARGET...]
+#   bash scripts/setup.sh [--sanitize LIST] [TARGET...]
 #     TARGET     build only these CMake targets (e.g. dynslam dynslam-eval) and what they
 #                need; none given: everything, the tests included
+#     --sanitize LIST  build with -fsanitize=LIST (address,undefined or thread), RelWithDebInfo
 #     -h, --help this text
 #   Environment: BUILD_DIR (default build/).
 #   Exit codes: 0 built, 1 a package could not be installed (no root, no sudo) or the build
@@ -16,12 +17,17 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 TARGETS=()
-for arg in "$@"; do
-  case "$arg" in
+CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release -DDYNSLAM_SANITIZE=)
+while (($#)); do
+  case "$1" in
     -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
-    -*) echo "setup: unknown argument '$arg' (see --help)" >&2; exit 2 ;;
-    *) TARGETS+=(--target "$arg") ;;
+    --sanitize)
+      [ -n "${2:-}" ] || { echo "setup: --sanitize needs a list (see --help)" >&2; exit 2; }
+      CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DDYNSLAM_SANITIZE=$2"); shift ;;
+    -*) echo "setup: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+    *) TARGETS+=(--target "$1") ;;
   esac
+  shift
 done
 
 # What each package is for is in README.md ("Dependencies").
@@ -49,7 +55,7 @@ else
 fi
 
 JOBS="$(nproc 2>/dev/null || echo 2)"
-{ cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+{ cmake -S "$ROOT" -B "$BUILD_DIR" "${CMAKE_ARGS[@]}" >/dev/null &&
   cmake --build "$BUILD_DIR" -j"$JOBS" "${TARGETS[@]}"
 } || { echo "setup: the build failed" >&2; exit 1; }
 echo "setup: programs in $BUILD_DIR/bin"

@@ -2,6 +2,7 @@
 // of evo (github.com/MichaelGrupp/evo) so that figures can be compared with published ones;
 // `bars` draws a table of such figures (e.g. per scenario and variant) as a bar chart.
 // Exit codes: 0 success, 1 bad data (unreadable file, nothing to associate, ...), 2 usage.
+#include <dynslam/core/AtomicFile.h>
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/TrajectoryFile.h>
@@ -232,9 +233,8 @@ void printAlignment(const ev::AlignmentResult& a) {
 }
 
 void writeJson(const std::string& path, const ev::ErrorStatistics& s) {
-  std::ofstream out(path);
-  if (!out) throw ev::EvaluationError("cannot write JSON file '" + path + "'");
-  dynslam::core::JsonWriter json(out);
+  dynslam::core::AtomicTextFile file(path);
+  dynslam::core::JsonWriter json(file.stream());
   json.beginObject()
       .member("rmse", s.rmse)
       .member("mean", s.mean)
@@ -244,8 +244,11 @@ void writeJson(const std::string& path, const ev::ErrorStatistics& s) {
       .member("max", s.max)
       .member("sse", s.sse)
       .endObject();
-  out.flush();
-  if (!out) throw ev::EvaluationError("error while writing JSON file '" + path + "'");
+  try {
+    file.commit();
+  } catch (const std::runtime_error& e) {
+    throw ev::EvaluationError(std::string("JSON file: ") + e.what());
+  }
 }
 
 /// dynslam-eval bars TABLE.tsv OUT.png: the table as a grouped bar chart.

@@ -81,8 +81,9 @@ Outputs in DIR (formats: docs/programs.md):
   map.3Dscene      for SceneViewer3D: "static_map" (coloured points of the depth outside object
                    masks), "camera_trajectory" (black polyline), "object_ID" (one per object)
 Exit codes: 0 ok, 1 bad input or configuration (the outputs hold what was done before the
-error; summary.json says "failed" and why), 2 usage, 130 interrupted (Ctrl-C; outputs hold the
-frames done).
+error; summary.json says "failed" and why), 2 usage, 130 / 143 interrupted (Ctrl-C / SIGTERM;
+outputs hold the frames done). Killed outright (kill -9), a run leaves every row written so far
+whole and no summary.json (it is written whole or not at all).
 )";
 }  // namespace
 

@@ -6,8 +6,10 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -286,6 +288,72 @@ TEST(Runner, SigtermAndCtrlCEndTheRunWithTheOutputsSoFar) {
   }
 }
 
+namespace {
+
+/// Every line of a CSV log has the header's number of fields and ends with a newline.
+void expectWholeCsvRows(const std::string& path) {
+  const std::string text = readTextFile(path);
+  ASSERT_FALSE(text.empty()) << path;
+  EXPECT_EQ(text.back(), '\n') << path << ": the last row was cut";
+  std::istringstream lines(text);
+  std::string header, row;
+  std::getline(lines, header);
+  const auto fields = [](const std::string& line) {
+    return std::count(line.begin(), line.end(), ',');
+  };
+  for (size_t n = 2; std::getline(lines, row); ++n)
+    EXPECT_EQ(fields(row), fields(header)) << path << " line " << n << ": " << row;
+}
+
+}  // namespace
+
+// kill -9 at a random frame (no handler runs): every pose and log row written before it is
+// whole, and summary.json is absent rather than a stale or half-written one.
+TEST(Runner, KillNineLeavesWholeLinesAndNoSummary) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 90);
+  const auto ini = writeTextFile(dir + "/vo.ini",
+                                 "[pipeline]\nstages = FeatureTracking, Estimator\n"
+                                 "[Estimator]\ndynamic_handling = none\ngyro_rotation_sigma = 0\n");
+  const unsigned seed = std::random_device{}();
+  const int killAt = 3 + int(std::mt19937(seed)() % 50);  // poses written before the kill
+  SCOPED_TRACE("kill -9 after " + std::to_string(killAt) + " poses (seed " + std::to_string(seed) +
+               ")");
+  const std::string out = dir + "/out";
+  fs::create_directories(out);
+  writeTextFile(out + "/summary.json", "{\"status\": \"ok\", \"from\": \"an earlier run\"}\n");
+  const auto r = runCommand("sh -c '" +
+                            dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " +
+                                           out + " --realtime --no-map") +
+                            " & p=$!; for i in $(seq 400); do [ $(cat " + out +
+                            "/trajectory.tum 2>/dev/null | wc -l) -ge " + std::to_string(killAt) +
+                            " ] && break; sleep 0.02; done; kill -9 $p; wait $p; echo exit $?'");
+  EXPECT_NE(r.output.find("exit 137"), std::string::npos) << r.output;
+  const size_t lines = lineCount(out + "/trajectory.tum");
+  EXPECT_GE(lines, size_t(killAt));
+  EXPECT_LT(lines, 90u) << "killed before the end";
+  EXPECT_EQ(dynslam::core::readTum(out + "/trajectory.tum").size(), lines) << "every line whole";
+  EXPECT_EQ(readTextFile(out + "/trajectory.tum").back(), '\n');
+  expectWholeCsvRows(out + "/timing.csv");
+  expectWholeCsvRows(out + "/keyframes.csv");
+  EXPECT_FALSE(fs::exists(out + "/summary.json")) << "the earlier run's summary was kept";
+}
+
+// [SensorSync] max_observation_mb bounds what one field of an observation may claim: over it, the
+// run fails naming the rawlog and the key, before the field is allocated.
+TEST(Runner, AnObservationOverTheSizeLimitIsAnErrorNamingTheRawlogAndTheKey) {
+  const std::string dir = scratchDir();
+  const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 5);  // 320 x 240: 230 KB of colour
+  const auto ini = writeTextFile(dir + "/odo.ini", kOdometryIni);
+  const auto r = runCommand(dynslamCommand("--config " + ini + " --rawlog " + rawlog + " --out " +
+                                           dir + "/out --set SensorSync.max_observation_mb=0.1"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(rawlog), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("[SensorSync] max_observation_mb"), std::string::npos) << r.output;
+  EXPECT_NE(readTextFile(dir + "/out/summary.json").find("\"status\": \"failed\""),
+            std::string::npos);
+}
+
 TEST(Runner, FeatureTrackingAndTheEstimatorFollowTheSyntheticRoom) {
   const std::string dir = scratchDir();
   const auto rawlog = writeRoomRawlog(dir + "/room.rawlog", 40);
@@ -332,6 +400,11 @@ TEST(Runner, PrintConfigWritesEveryKeyAtTheValueARunWouldUse) {
   EXPECT_GT(at("quality_level = 0.02"), tracking) << r.output;
   EXPECT_GT(at("window_size = 10"), estimator) << r.output;
   EXPECT_NE(r.output.find("[SensorSync]"), std::string::npos) << r.output;
+  // What it prints is an ini a run reads back (keys with empty values included).
+  const auto printed = writeTextFile(scratchDir() + "/printed.ini",
+                                     r.output.substr(r.output.find("# The configuration")));
+  const auto again = runCommand(binDir() + "/dynslam --config " + printed + " --print-config 2>&1");
+  EXPECT_EQ(again.exit_code, 0) << again.output;
 
   const auto bad = runCommand(binDir() + "/dynslam --config " + ini +
                               " --set FeatureTracking.max_featres=3 --print-config 2>&1");

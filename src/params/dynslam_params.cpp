@@ -1,9 +1,9 @@
 // dynslam-params: the parameter reference (docs/parameters.md), generated from the code.
 #include "params/ParameterReference.h"
 
+#include <dynslam/core/AtomicFile.h>
 #include <dynslam/core/CommandLine.h>
 
-#include <fstream>
 #include <iostream>
 
 namespace {
@@ -38,9 +38,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const std::string path = cl.required("--out");
-    std::ofstream out(path);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write '" + path + "'");
+    dynslam::core::writeFileAtomically(path, text);
     std::cerr << "dynslam-params: wrote " << path << "\n";
     return 0;
   });

@@ -29,7 +29,6 @@ class KeyframeLog : public system::FrameSink {
  private:
   std::string path_;
   std::ofstream out_;
-  std::size_t rows_ = 0;
 };
 
 }  // namespace dynslam::runner

@@ -1,5 +1,6 @@
 #include "RunSummary.h"
 
+#include <dynslam/core/AtomicFile.h>
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/io/SensorSync.h>
@@ -7,7 +8,6 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <fstream>
 
 namespace dynslam::runner {
 
@@ -92,8 +92,8 @@ double processCpuSeconds() {
 
 void writeSummary(const std::string& path, const RunnerArgs& args, const RunRecord& rec,
                   const io::SyncCounts* counts, const core::Pipeline* pipeline) {
-  std::ofstream out(path);
-  core::JsonWriter j(out);
+  core::AtomicTextFile file(path);  // a run killed while writing leaves no half summary
+  core::JsonWriter j(file.stream());
   j.beginObject();
   j.member("status", rec.status);
   if (!rec.error.empty()) j.member("error", rec.error);
@@ -122,6 +122,7 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   if (counts) writeObservations(j, *counts);
   writeStages(j, pipeline);
   j.endObject();
+  file.commit();
 }
 
 }  // namespace dynslam::runner

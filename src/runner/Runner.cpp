@@ -40,6 +40,11 @@ namespace fs = std::filesystem;
 namespace dynslam::runner {
 namespace {
 
+/// [SensorSync] max_observation_mb as the rawlog reader's limit on one field.
+std::size_t maxObservationBytes(const system::System& system) {
+  return std::size_t(system.sensorSync().max_observation_mb * 1024 * 1024);
+}
+
 /// The signal that interrupted the run (SIGINT: Ctrl-C; SIGTERM: kill, a job scheduler), 0 while
 /// none has: the run stops reading, finishes every output and exits with 128 + that signal.
 std::atomic<int> g_interrupted{0};
@@ -112,6 +117,10 @@ class DynslamRun {
 
   int run() {
     if (!createFolders(args_)) return 1;
+    // An earlier run's summary goes first: a run killed before it writes its own (kill -9, a
+    // power cut) must not leave one that looks complete beside this run's outputs.
+    std::error_code ignored;
+    fs::remove(outPath("summary.json"), ignored);
     try {
       openOutputs();
       configure();
@@ -172,7 +181,7 @@ class DynslamRun {
     }
     system_->addSink(std::make_shared<RecordSink>(*this));
     if (args_.sensors.empty()) {
-      source_.emplace(args_.rawlog);
+      source_.emplace(args_.rawlog, maxObservationBytes(*system_));
     } else {
       sensors_ = std::make_unique<LiveSensors>(args_.sensors);
       if (!args_.record.empty()) {

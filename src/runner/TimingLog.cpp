@@ -22,8 +22,9 @@ void TimingLog::append(std::size_t frame, double t, const core::Pipeline& pipeli
   for (const auto& stage : pipeline.times())
     out_ << ',' << (stage.ms.empty() ? 0.0 : stage.ms.back());
   out_ << ',' << pipeline_ms << '\n';
-  // Flushed now and then rather than per row: a crash loses at most a few rows of timing.
-  if (frame % 100 == 0) out_.flush();
+  // Flushed per row, one write() a row: a kill -9 leaves every row before it whole (flushed
+  // only when the buffer filled, the last row could be cut anywhere).
+  out_.flush();
   if (!out_) throw std::runtime_error("cannot write the timing log '" + path_ + "'");
 }
 

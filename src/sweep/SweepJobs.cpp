@@ -1,9 +1,10 @@
 #include "sweep/SweepJobs.h"
 
+#include <dynslam/core/AtomicFile.h>
+
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -111,16 +112,17 @@ std::string shellLine(const SweepSpec& spec, const Job& job) {
 
 std::string writeJobList(const SweepSpec& spec, const std::vector<Job>& jobs) {
   const std::string path = (fs::path(spec.out) / "jobs.txt").string();
-  std::ofstream out(path);
-  for (const auto& job : jobs) out << shellLine(spec, job) << '\n';
-  if (!out) throw std::runtime_error("cannot write the job list '" + path + "'");
+  core::AtomicTextFile file(path);
+  for (const auto& job : jobs) file.stream() << shellLine(spec, job) << '\n';
+  file.commit();
   return path;
 }
 
 std::string writeSlurmScript(const SweepSpec& spec, const std::vector<Job>& jobs,
                              const std::string& jobList, int throttle) {
   const std::string path = (fs::path(spec.out) / "sweep.slurm").string();
-  std::ofstream out(path);
+  core::AtomicTextFile file(path);
+  std::ostream& out = file.stream();
   out << "#!/bin/bash\n"
       << "# dynslam-sweep job array: task i runs line i+1 of the job list (one dynslam run).\n"
       << "# Submit with: sbatch " << shellQuote(path) << "\n"
@@ -135,7 +137,7 @@ std::string writeSlurmScript(const SweepSpec& spec, const std::vector<Job>& jobs
       << "set -euo pipefail\n"
       << "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " << shellQuote(jobList) << ")\n"
       << "exec bash -c \"$line\"\n";
-  if (!out) throw std::runtime_error("cannot write the Slurm script '" + path + "'");
+  file.commit();
   return path;
 }
 

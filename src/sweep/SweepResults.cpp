@@ -2,6 +2,7 @@
 
 #include "sweep/SummaryJson.h"
 
+#include <dynslam/core/AtomicFile.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/evaluation/Alignment.h>
 #include <dynslam/evaluation/Ape.h>
@@ -10,7 +11,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -77,7 +77,8 @@ JobResult collectJob(const SweepSpec& spec, const Job& job) {
 
 std::string writeResultsCsv(const SweepSpec& spec, const std::vector<JobResult>& results) {
   const std::string path = (fs::path(spec.out) / "results.csv").string();
-  std::ofstream out(path);
+  core::AtomicTextFile file(path);  // dynslam-sweep killed while writing: the previous table stays
+  std::ostream& out = file.stream();
   out << "job,rawlog";
   for (const auto& k : spec.keys) out << ',' << csvField(k.name());
   out << ",status,ape_rmse,ape_mean,ape_median,ape_std,rpe_rmse,rpe_mean,fps,reason,folder\n";
@@ -97,7 +98,7 @@ std::string writeResultsCsv(const SweepSpec& spec, const std::vector<JobResult>&
         << number(stat(r.rpe, &ev::ErrorStatistics::mean)) << ',' << number(r.fps) << ','
         << csvField(r.reason) << ',' << csvField(job.name) << '\n';
   }
-  if (!out) throw std::runtime_error("cannot write '" + path + "'");
+  file.commit();
   return path;
 }
 

@@ -39,7 +39,13 @@ Pipeline::Pipeline(const IniConfig& cfg, const StageRegistry& registry) {
       throw ConfigError("unknown key '" + key + "' in section [pipeline] of " + cfg.source() +
                         "; known keys: stages");
   for (const auto& e : pipelineStageEntries(cfg)) {
-    auto stage = registry.create(e.class_name);
+    std::unique_ptr<Stage> stage;
+    try {
+      stage = registry.create(e.class_name);
+    } catch (const ConfigError& error) {  // a typo in the ini: say which file and key
+      throw ConfigError(std::string(error.what()) + " (key 'stages' in section [pipeline] of " +
+                        cfg.source() + ")");
+    }
     stage->setLoggerName(e.section);
     stage->configure(cfg, e.section);
     stages_.push_back(std::move(stage));

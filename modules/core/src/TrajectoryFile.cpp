@@ -1,5 +1,7 @@
 #include "dynslam/core/TrajectoryFile.h"
 
+#include "dynslam/core/AtomicFile.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -196,11 +198,13 @@ void appendTumLine(std::ostream& out, const StampedPose& pose) {
 }
 
 void writeTum(const std::string& path, const Trajectory& trajectory) {
-  std::ofstream out(path);
-  if (!out) throw TrajectoryFileError("cannot write trajectory file '" + path + "'");
-  for (const auto& pose : trajectory) appendTumLine(out, pose);
-  out.flush();
-  if (!out) throw TrajectoryFileError("error while writing trajectory file '" + path + "'");
+  AtomicTextFile file(path);
+  for (const auto& pose : trajectory) appendTumLine(file.stream(), pose);
+  try {
+    file.commit();
+  } catch (const std::runtime_error& e) {
+    throw TrajectoryFileError(std::string("trajectory file: ") + e.what());
+  }
 }
 
 }  // namespace dynslam::core

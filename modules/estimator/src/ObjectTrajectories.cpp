@@ -43,8 +43,10 @@ void ObjectTrajectories::update(core::Frame& frame,
     written.translation() = T_wc * set.virtual_centroid;
     frame.object_poses.push_back({set.object_id, written});
   }
-  // After all sets are followed: each composes from the previous frame's poses.
-  for (const auto& [id, f] : updated) objects_[id] = f;
+  // After all sets are followed: each composes from the previous frame's poses. Only this
+  // frame's objects are kept (follow() continues an object from the frame before only), so a
+  // long run does not keep one entry per object it ever saw.
+  objects_ = std::move(updated);
   previous_camera_ = T_wc;
   previous_frame_ = frame.index;
 }

@@ -7,7 +7,8 @@
 
 namespace dynslam::io::detail {
 
-GzReadStream::GzReadStream(const std::string& path) {
+GzReadStream::GzReadStream(const std::string& path, uint64_t max_field_bytes)
+    : guard_(max_field_bytes) {
   std::error_code ec;
   file_size_ = std::filesystem::file_size(path, ec);
   if (ec) throw std::runtime_error("cannot open rawlog '" + path + "': " + ec.message());
@@ -22,9 +23,11 @@ GzReadStream::~GzReadStream() {
 
 size_t GzReadStream::Read(void* buffer, size_t count) {
   if (count == 0) return 0;
+  guard_.checkRequest(count);
   const int n = gzread(static_cast<gzFile>(gz_), buffer, static_cast<unsigned>(count));
   if (n < 0) throw std::runtime_error("read error: " + zlibError());
   uncompressed_pos_ += static_cast<uint64_t>(n);
+  guard_.observe(buffer, static_cast<size_t>(n));
   return static_cast<size_t>(n);
 }
 

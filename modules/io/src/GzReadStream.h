@@ -2,7 +2,10 @@
 // A read-only mrpt::io::CStream over zlib's gzFile (plain files read through unchanged) that
 // knows two things CFileGZInputStream does not tell: how far into the compressed file we are
 // (for progress and ETA) and how many bytes the current object has consumed (to tell a clean
-// end of file from a file cut in the middle of an object).
+// end of file from a file cut in the middle of an object). Every byte it delivers passes
+// through a SerializedSizeGuard, which refuses a size field over the limit before MRPT sees it.
+#include "SerializedSizeGuard.h"
+
 #include <mrpt/io/CStream.h>
 
 #include <cstdint>
@@ -12,8 +15,9 @@ namespace dynslam::io::detail {
 
 class GzReadStream : public mrpt::io::CStream {
  public:
-  /// Throws std::runtime_error naming `path` when it cannot be opened.
-  explicit GzReadStream(const std::string& path);
+  /// Throws std::runtime_error naming `path` when it cannot be opened. No field of an object
+  /// may claim more than max_field_bytes (SerializedSizeGuard).
+  GzReadStream(const std::string& path, uint64_t max_field_bytes);
   ~GzReadStream() override;
   GzReadStream(const GzReadStream&) = delete;
   GzReadStream& operator=(const GzReadStream&) = delete;
@@ -28,7 +32,11 @@ class GzReadStream : public mrpt::io::CStream {
   uint64_t compressedPosition() const;
   /// Bytes read since the last markObjectStart().
   uint64_t bytesSinceMark() const { return uncompressed_pos_ - mark_; }
-  void markObjectStart() { mark_ = uncompressed_pos_; }
+  void markObjectStart() {
+    mark_ = uncompressed_pos_;
+    guard_.beginObject();
+  }
+  const SerializedSizeGuard& guard() const { return guard_; }
   /// zlib's description of a read error ("" when none), e.g. for a truncated gzip member.
   std::string zlibError() const;
 
@@ -37,6 +45,7 @@ class GzReadStream : public mrpt::io::CStream {
   uint64_t file_size_ = 0;
   uint64_t uncompressed_pos_ = 0;
   uint64_t mark_ = 0;
+  SerializedSizeGuard guard_;
 };
 
 }  // namespace dynslam::io::detail

@@ -14,17 +14,23 @@ namespace fs = std::filesystem;
 namespace dynslam::io {
 namespace {
 
-std::string firstLine(const std::string& s) {
-  const auto nl = s.find('\n');
-  return nl == std::string::npos ? s : s.substr(0, nl);
+/// The message of an exception in one line. MRPT's own start with a "==== MRPT exception ===="
+/// banner, then "Message:  ...", the location and a backtrace: only the message says anything
+/// to a user.
+std::string oneLineMessage(const std::string& s) {
+  const auto message = s.find("Message:");
+  const auto start = message == std::string::npos ? message : s.find_first_not_of(' ', message + 8);
+  const bool mrpt = s.rfind("==== MRPT exception", 0) == 0 && start != std::string::npos;
+  const std::string text = mrpt ? s.substr(start) : s;
+  return text.substr(0, text.find('\n'));
 }
 
 }  // namespace
 
-RawlogSource::RawlogSource(const std::string& path) : path_(path) {
+RawlogSource::RawlogSource(const std::string& path, std::size_t max_field_bytes) : path_(path) {
   if (!fs::is_regular_file(path)) throw RawlogError("rawlog '" + path + "' does not exist");
   try {
-    stream_ = std::make_unique<detail::GzReadStream>(path);
+    stream_ = std::make_unique<detail::GzReadStream>(path, max_field_bytes);
   } catch (const std::exception& e) {
     throw RawlogError(e.what());
   }
@@ -51,18 +57,24 @@ mrpt::obs::CObservation::Ptr RawlogSource::next() {
     } catch (const std::exception& e) {
       // An end of file before the first byte of an entry is the normal end; anywhere else the
       // file was cut short or is not a rawlog.
-      if (stream_->bytesSinceMark() == 0 && stream_->zlibError().empty()) {
+      const auto& guard = stream_->guard();
+      if (!guard.refused() && stream_->bytesSinceMark() == 0 && stream_->zlibError().empty()) {
         ended_ = true;
         return nullptr;
       }
+      // MRPT wraps the guard's exception in its own, so take the refusal from the guard.
       const std::string zerr = stream_->zlibError();
+      const std::string why =
+          guard.refused() ? guard.refusal() : (zerr.empty() ? oneLineMessage(e.what()) : zerr);
       throw RawlogError("rawlog '" + path_ + "' is truncated or corrupt at entry #" +
                         std::to_string(entries_) + " (byte " +
                         std::to_string(stream_->compressedPosition()) + " of " +
-                        std::to_string(stream_->getTotalBytesCount()) +
-                        "): " + (zerr.empty() ? firstLine(e.what()) : zerr));
+                        std::to_string(stream_->getTotalBytesCount()) + "): " + why);
     }
     ++entries_;
+    if (!obj)  // MRPT writes a null pointer as the class name "nullptr"
+      throw RawlogError("rawlog '" + path_ + "': entry #" + std::to_string(entries_ - 1) +
+                        " is an empty object (nullptr), not an observation");
     if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) return obs;
     if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj)) {
       for (const auto& o : *sf) pending_.push_back(o);

@@ -31,6 +31,14 @@ void SensorSyncOptions::describe(core::OptionVisitor& v) {
   v.key("gnss_label", gnss_label, "sensorLabel of the GNSS receiver (empty: any)");
   v.key("skip_frames_without_depth", skip_frames_without_depth,
         "true: drop RGB-D observations without depth; false: error");
+  v.key("max_observation_mb", max_observation_mb, core::Range::above(0),
+        "MB; an image, depth image, point cloud or string in a rawlog observation claiming more "
+        "is an error before it is allocated (a corrupt size field)");
+  v.key("queue_observations", queue_observations, core::Range::atLeast(1),
+        "observations read ahead of the frame synchronisation at most (the reading thread waits "
+        "while the queue is full): the memory of this many observations with their images");
+  v.key("frames_ahead", frames_ahead, core::Range::atLeast(1),
+        "frames made ahead of the pipeline at most");
 }
 
 SensorSync::SensorSync(SensorSyncOptions options) : options_(std::move(options)) {}

@@ -3,6 +3,7 @@
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/testing/TestEnv.h>
 
+#include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -73,6 +74,35 @@ TEST(RawlogSource, TruncatedFileIsAnErrorAfterTheIntactEntries) {
   }
   EXPECT_GT(n, 3u) << "the intact entries before the cut are delivered";
   EXPECT_LT(n, 20u);
+}
+
+// An entry of a class MRPT does not know (a flipped bit in its name): the error says what MRPT
+// says, in one line, without MRPT's banner and backtrace.
+TEST(RawlogSource, AnUnknownClassIsAnErrorInOneReadableLine) {
+  const std::string path = dynslam::testing::scratchDir() + "/renamed.rawlog";
+  {
+    mrpt::io::CFileOutputStream f(path);  // plain: the class names are in the bytes
+    auto out = mrpt::serialization::archiveFrom(f);
+    out << *makeImu(1.0) << *makeImu(1.005);
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = bytes.rfind("CObservationIMU");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 14] = 'X';
+  std::ofstream(path, std::ios::binary) << bytes;
+  RawlogSource src(path);
+  ASSERT_TRUE(src.next());
+  try {
+    src.next();
+    FAIL() << "no error for an unknown class";
+  } catch (const RawlogError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(path), std::string::npos) << msg;
+    EXPECT_NE(msg.find("CObservationIMX"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("===="), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
 }
 
 TEST(RawlogSource, MissingFileNamesIt) {

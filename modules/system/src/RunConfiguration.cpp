@@ -93,8 +93,10 @@ void printEffectiveConfig(const std::string& config, const std::vector<std::stri
     out << "\n[" << section << "]\n";
     for (const auto& k : keys) {
       const std::string line = k.key + " = " + k.default_value;
+      // After an empty value MRPT's reader takes the comment for the value: it goes above.
+      if (k.default_value.empty() && !k.meaning.empty()) out << "// " << k.meaning << "\n";
       out << line;
-      if (!k.meaning.empty())
+      if (!k.default_value.empty() && !k.meaning.empty())
         out << std::string(line.size() < 40 ? 40 - line.size() : 1, ' ') << "// " << k.meaning;
       out << "\n";
     }

@@ -40,15 +40,13 @@ using ObservationPtr = std::shared_ptr<mrpt::obs::CObservation>;
 /// the map, the sinks, the subscribers). Two threads, so that making a frame overlaps processing
 /// the one before, as the rawlog reader's own thread did. Synchronous: all on the caller's.
 struct System::Impl {
-  /// Frames made ahead of the pipeline at most.
-  static constexpr std::size_t kFramesAhead = 4;
-
   Impl(const core::IniConfig& ini, SystemSettings s)
       : settings(s),
         configured(configureRun(ini)),
         sync(configured.sync),
-        observations(settings.queue_capacity),
-        frames(kFramesAhead) {
+        observations(settings.queue_capacity ? settings.queue_capacity
+                                             : std::size_t(configured.sync.queue_observations)),
+        frames(std::size_t(configured.sync.frames_ahead)) {
     if (settings.map) {
       viz::MapSceneOptions options;
       options.every_n_frames = settings.map_every_n_frames;
@@ -259,6 +257,8 @@ std::optional<Eigen::Vector3d> System::latestVelocity() const {
 std::vector<MovingObject> System::movingObjects() const { return impl_->state.movingObjects(); }
 TrackingStatus System::status() const { return impl_->state.status(); }
 std::size_t System::framesProcessed() const { return impl_->state.frames(); }
+
+const io::SensorSyncOptions& System::sensorSync() const { return impl_->configured.sync; }
 
 io::SyncCounts System::counts() const {
   std::lock_guard<std::mutex> lock(impl_->syncMutex);

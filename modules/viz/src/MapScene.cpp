@@ -2,6 +2,8 @@
 
 #include "dynslam/viz/IdColours.h"
 
+#include <dynslam/core/AtomicFile.h>
+
 #include <mrpt/maps/CColouredPointsMap.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
@@ -130,8 +132,10 @@ void MapSceneBuilder::addStaticPoints(const core::Frame& f) {
 void MapSceneBuilder::save(const std::string& path) const {
   mrpt::opengl::COpenGLScene scene;
   fill(scene);
-  if (!scene.saveToFile(path))
-    throw std::runtime_error("cannot write the map scene '" + path + "'");
+  core::replaceFileAtomically(path, [&](const std::string& temporary) {
+    if (!scene.saveToFile(temporary))
+      throw std::runtime_error("cannot write the map scene '" + path + "'");
+  });
 }
 
 namespace {

@@ -5,6 +5,7 @@
 // outside the file (<dir>/<stem>_Images/) are found automatically.
 #include <mrpt/obs/CObservation.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -23,9 +24,15 @@ namespace detail {
 class GzReadStream;
 }
 
+/// The most one field of an observation (an image, a depth matrix, the 3D points, a string)
+/// may take once read: a corrupt size field claiming more is refused before it is allocated.
+inline constexpr std::size_t kDefaultMaxObservationFieldBytes = std::size_t{512} << 20;
+
 class RawlogSource {
  public:
-  explicit RawlogSource(const std::string& path);
+  /// An entry with a field claiming more than max_field_bytes is a RawlogError (corrupt).
+  explicit RawlogSource(const std::string& path,
+                        std::size_t max_field_bytes = kDefaultMaxObservationFieldBytes);
   ~RawlogSource();
   RawlogSource(const RawlogSource&) = delete;
   RawlogSource& operator=(const RawlogSource&) = delete;

@@ -38,6 +38,11 @@ struct SensorSyncOptions : core::Options {
   std::string imu_label;
   std::string gnss_label;
   bool skip_frames_without_depth = false;
+  // Bounds on what reading holds (used by the rawlog reader and System's queues, not here):
+  // memory stays bounded whatever the file claims and however far the reader gets ahead.
+  double max_observation_mb = 512;
+  int queue_observations = 64;
+  int frames_ahead = 4;
 
   void describe(core::OptionVisitor& v) override;
 };

@@ -33,7 +33,8 @@ class CObservation;
 }
 namespace dynslam::io {
 struct SyncCounts;
-}
+struct SensorSyncOptions;
+}  // namespace dynslam::io
 namespace dynslam::viz {
 class MapSceneBuilder;
 }
@@ -44,8 +45,9 @@ struct SystemSettings {
   /// Process inside onNewObservation() on the caller's thread (no thread of its own).
   bool synchronous = false;
   /// Observations waiting for the processing thread at most; onNewObservation() blocks while
-  /// the queue is full (a rawlog is read no further ahead than this).
-  std::size_t queue_capacity = 64;
+  /// the queue is full (a rawlog is read no further ahead than this). 0: the ini's
+  /// [SensorSync] queue_observations (default 64).
+  std::size_t queue_capacity = 0;
   /// Frames processed at most (-1: all); later observations are ignored.
   long max_frames = -1;
   /// Build the static point map (map updates, map()); the frames it takes and its voxel size.
@@ -98,6 +100,9 @@ class System {
   std::size_t framesProcessed() const;
   /// The synchronizer's counts (observations by type, frames, those it did not use).
   io::SyncCounts counts() const;
+  /// The ini's [SensorSync] settings, the input bounds among them (a rawlog reader's
+  /// max_observation_mb).
+  const io::SensorSyncOptions& sensorSync() const;
   std::optional<Eigen::Vector3d> gnssOrigin() const;
 
   /// Whether [pipeline] holds a stage that estimates the camera pose.
