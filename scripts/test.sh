@@ -37,15 +37,16 @@ else
   TARGETS=()  # address,undefined: everything; thread: the test programs that start threads
   [ "$SANITIZE" = thread ] && TARGETS=(io_test detection_test system_test sim_render_test
                                        live_sensors_test runner_test)
-  BUILD_DIR="$BUILD_DIR" bash "$ROOT/scripts/setup.sh" --sanitize "$SANITIZE" "${TARGETS[@]}"
   SUPP="$ROOT/scripts/sanitizers"
-  # MRPT, OpenCV and Ceres are not instrumented: what they keep until exit is theirs
-  # (lsan.supp); a finding in our code stops its test with a report.
-  # A finding exits 66: neither a program's own 0 / 1 nor a signal, so no test mistakes it.
+  # MRPT, OpenCV and Ceres are not instrumented: what they do that the sanitizers cannot see
+  # is suppressed (scripts/sanitizers/*.supp); a finding in our code stops its test with a
+  # report. A finding exits 66: neither a program's own 0 / 1 nor a signal, so no test mistakes it.
   export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:exitcode=66"
   export LSAN_OPTIONS="suppressions=$SUPP/lsan.supp:print_suppressions=0:exitcode=66"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:exitcode=66"
   export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:exitcode=66:suppressions=$SUPP/tsan.supp"
+  # Set before the build: it runs each test program to list its tests.
+  BUILD_DIR="$BUILD_DIR" bash "$ROOT/scripts/setup.sh" --sanitize "$SANITIZE" "${TARGETS[@]}"
   if [ "$SANITIZE" = thread ]; then
     CTEST_ARGS=(-R 'FrameReader|Realtime|SystemTest\.Threaded|LiveSensors|RenderSpeed\.ThreadCount')
   fi

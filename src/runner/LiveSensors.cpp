@@ -20,6 +20,9 @@ LiveSensors::LiveSensors(const std::string& ini_file) {
   const mrpt::config::CConfigFile ini(ini_file);
   std::vector<std::string> sections;
   ini.getAllSections(sections);
+  merge_hold_s_ = ini.read_double("global", "merge_hold_s", kMergeHoldS);
+  if (!(merge_hold_s_ >= 0 && merge_hold_s_ <= 10))
+    throw std::runtime_error("[global] merge_hold_s of " + ini_file + ": must be in [0, 10] s");
   std::vector<std::string> names;
   for (const auto& section : sections) {
     if (section.empty() || section == "global") continue;
@@ -80,7 +83,7 @@ LiveSensors::Wait LiveSensors::next(double timeout_s,
                                     std::shared_ptr<mrpt::obs::CObservation>& out) {
   using Clock = std::chrono::steady_clock;
   const auto hold =
-      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kMergeHoldS));
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(merge_hold_s_));
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(timeout_s));
   std::unique_lock<std::mutex> lock(mutex_);

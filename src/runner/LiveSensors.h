@@ -2,10 +2,11 @@
 // `dynslam --sensors FILE.ini`: MRPT hwdrivers sensors configured as rawlog-grabber configures
 // them (one section per sensor with `driver = COpenNI2Sensor | CKinect | CCameraSensor |
 // CIMUXSens_MT4 | CGPSInterface | CRawlogReplaySensor ...`, `process_rate`, `sensorLabel`; a
-// [global] section is ignored), each on a thread of its own at its process_rate, as MRPT's
-// ICP_SLAM_App_Live runs them; their observations merged in time order: each is held for
-// kMergeHoldS after it arrives, so that a sample of another sensor stamped before it but
-// delivered a little later (another thread, another bus) still goes first.
+// [global] section holds only `merge_hold_s`), each on a thread of its own at its
+// process_rate, as MRPT's ICP_SLAM_App_Live runs them; their observations merged in time order:
+// each is held for merge_hold_s (default kMergeHoldS) after it arrives, so that a sample of
+// another sensor stamped before it but delivered a little later (another thread, another bus)
+// still goes first.
 #include <chrono>
 #include <condition_variable>
 #include <map>
@@ -47,6 +48,7 @@ class LiveSensors {
 
   std::vector<std::shared_ptr<mrpt::hwdrivers::CGenericSensor>> sensors_;
   std::vector<std::thread> threads_;
+  double merge_hold_s_ = kMergeHoldS;
   std::mutex mutex_;
   std::condition_variable arrived_;
   struct Arrived {

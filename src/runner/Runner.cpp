@@ -138,6 +138,10 @@ class DynslamRun {
       }
     }
     rec_.poses = trajectory_ ? trajectory_->trajectory().count() : 0;
+    // Counted once System's threads are done: before, its pipeline thread may still write.
+    if (rec_.status == "failed" && trajectory_)
+      std::cerr << "dynslam: " << trajectory_->trajectory().path() << " holds the " << rec_.poses
+                << " poses estimated before the error\n";
     rec_.objects = trajectory_ ? trajectory_->objects() : 0;
     rec_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     rec_.cpu_s = processCpuSeconds() - startCpu_;
@@ -316,9 +320,6 @@ class DynslamRun {
     rec_.status = "failed";
     rec_.error = e.what();
     std::cerr << "\ndynslam: error: " << e.what() << "\n";
-    if (trajectory_)
-      std::cerr << "dynslam: " << trajectory_->trajectory().path() << " holds the "
-                << trajectory_->trajectory().count() << " poses estimated before the error\n";
   }
 
   /// What is written once the frames are done, also after an error or Ctrl-C (like
