@@ -2,6 +2,7 @@
 
 #include <dynslam/testing/SyntheticObservations.h>
 #include <dynslam/testing/SyntheticRoom.h>
+#include <dynslam/testing/TestEnv.h>
 
 #include <unistd.h>
 
@@ -26,13 +27,6 @@ namespace dynslam::bench::fuzz {
 namespace {
 
 constexpr int kFrames = 10;
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string encode(const cv::Mat& image, const char* extension) {
   std::vector<uchar> bytes;
@@ -72,7 +66,7 @@ std::string roomRawlog(const std::string& scratch, bool gzip) {
     auto archive = mrpt::serialization::archiveFrom(*out);
     for (const auto& o : objects) archive << *o;
   }
-  return readFile(file);
+  return dt::readTextFile(file);
 }
 
 const char* kPipelineIni =
@@ -89,9 +83,10 @@ std::string tumLine(double t, const Eigen::Isometry3d& T) {
   return line;
 }
 
-InputKind rawlogKind(const std::string& bin, const std::string& scratch) {
+InputKind rawlogKind(const std::string& bin, const std::string& scratch,
+                     const std::string& plainRawlog) {
   InputKind k{"rawlog",
-              {{"room.rawlog", roomRawlog(scratch, false), false, true},
+              {{"room.rawlog", plainRawlog, false, true},
                {"room_gz.rawlog", roomRawlog(scratch, true), false, true},
                {"fuzz.ini", kPipelineIni, true, false}},
               {}};
@@ -104,18 +99,17 @@ InputKind rawlogKind(const std::string& bin, const std::string& scratch) {
 
 /// Every key of every section the pipeline reads, at the values a run would use (dynslam
 /// --print-config): mutations reach each option's parsing and range check.
-InputKind iniKind(const std::string& bin, const std::string& scratch) {
+InputKind iniKind(const std::string& bin, const std::string& scratch,
+                  const std::string& plainRawlog) {
   const std::string base = scratch + "/base.ini", printed = scratch + "/printed.ini";
   std::ofstream(base) << "[pipeline]\nstages = FeatureTracking, DynamicClassification, "
                          "Segmentation, Tracking, Estimator\n";
   const std::string command =
       bin + "/dynslam --config " + base + " --print-config > " + printed + " 2>/dev/null";
-  std::string ini = std::system(command.c_str()) == 0 ? readFile(printed) : "";
+  std::string ini = std::system(command.c_str()) == 0 ? dt::readTextFile(printed) : "";
   if (ini.empty()) ini = kPipelineIni;  // the base case then says what failed
   InputKind k{
-      "ini",
-      {{"fuzz.ini", ini, true, true}, {"room.rawlog", roomRawlog(scratch, false), false, false}},
-      {}};
+      "ini", {{"fuzz.ini", ini, true, true}, {"room.rawlog", plainRawlog, false, false}}, {}};
   k.command = [bin](const std::string& dir, const std::string&) {
     return std::vector<std::string>{bin + "/dynslam", "--config",           dir + "/fuzz.ini",
                                     "--rawlog",       dir + "/room.rawlog", "--out",
@@ -263,8 +257,10 @@ std::vector<InputKind> makeInputKinds(const std::string& bin,
       (fs::temp_directory_path() / ("fuzz-base-" + std::to_string(::getpid()))).string();
   fs::create_directories(scratch);
   std::vector<InputKind> kinds;
-  if (wanted("rawlog")) kinds.push_back(rawlogKind(bin, scratch));
-  if (wanted("ini")) kinds.push_back(iniKind(bin, scratch));
+  const std::string plainRawlog =
+      wanted("rawlog") || wanted("ini") ? roomRawlog(scratch, false) : "";  // both use it
+  if (wanted("rawlog")) kinds.push_back(rawlogKind(bin, scratch, plainRawlog));
+  if (wanted("ini")) kinds.push_back(iniKind(bin, scratch, plainRawlog));
   if (wanted("trajectory")) kinds.push_back(trajectoryKind(bin));
   if (wanted("sevenscenes")) kinds.push_back(sevenScenesKind(bin));
   if (wanted("tum")) kinds.push_back(tumKind(bin));

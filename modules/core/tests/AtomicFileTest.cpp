@@ -7,19 +7,11 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace core = dynslam::core;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string contentOf(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 size_t filesIn(const std::string& dir) {
   size_t n = 0;
@@ -35,9 +27,10 @@ TEST(AtomicFile, CommitReplacesTheFileAndLeavesNoTemporary) {
   std::ofstream(path) << "{\"status\": \"old\"}\n";
   core::AtomicTextFile file(path);
   file.stream() << "{\"status\": \"ok\"}\n";
-  EXPECT_EQ(contentOf(path), "{\"status\": \"old\"}\n") << "replaced before commit";
+  EXPECT_EQ(dynslam::testing::readTextFile(path), "{\"status\": \"old\"}\n")
+      << "replaced before commit";
   file.commit();
-  EXPECT_EQ(contentOf(path), "{\"status\": \"ok\"}\n");
+  EXPECT_EQ(dynslam::testing::readTextFile(path), "{\"status\": \"ok\"}\n");
   EXPECT_EQ(filesIn(dir), 1u) << "a temporary file was left beside it";
 }
 
@@ -67,10 +60,10 @@ TEST(AtomicFile, AFailedWriteNamesTheFileAndKeepsThePreviousOne) {
                                              throw std::runtime_error("the writer failed");
                                            }),
                std::runtime_error);
-  EXPECT_EQ(contentOf(path), "previous");
+  EXPECT_EQ(dynslam::testing::readTextFile(path), "previous");
   EXPECT_EQ(filesIn(dir), 1u) << "the failed writer's temporary was left";
   core::replaceFileAtomically(
       path, [](const std::string& temporary) { std::ofstream(temporary) << "the new map"; });
-  EXPECT_EQ(contentOf(path), "the new map");
+  EXPECT_EQ(dynslam::testing::readTextFile(path), "the new map");
   EXPECT_EQ(filesIn(dir), 1u);
 }
