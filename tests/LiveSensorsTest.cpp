@@ -1,5 +1,7 @@
 // dynslam --sensors: MRPT hwdrivers sensors on threads of their own, without hardware through
 // our rawlog replay driver (CRawlogReplaySensor, at the recorded rate).
+#include "runner/LiveSensors.h"
+
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/testing/SyntheticObservations.h>
 #include <dynslam/testing/SyntheticRoom.h>
@@ -9,8 +11,10 @@
 
 #include <mrpt/obs/CObservation.h>
 
+#include <chrono>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -127,6 +131,54 @@ TEST(LiveSensors, ASensorThatStopsDeliveringEndsTheRunAfterTheTimeoutWithWhatCam
       << r.output;
   const std::string trajectory = readTextFile(dir + "/out/trajectory.tum");
   EXPECT_GE(std::count(trajectory.begin(), trajectory.end(), '\n'), 2) << "the frames before";
+}
+
+TEST(LiveSensors, AFullQueueKeepsTheNewestObservationsAndCountsTheDropped) {
+  const std::string dir = dynslam::testing::scratchDir();
+  const auto path = dynslam::testing::handheldPath(10);
+  std::vector<mrpt::serialization::CSerializable::Ptr> objs;
+  for (int i = 0; i < 10; ++i)
+    objs.push_back(
+        dynslam::testing::makeRoomScan(10.0 + i / 30.0, path[i], dynslam::testing::vgaCamera()));
+  dynslam::testing::writeRawlog(dir + "/ten.rawlog", objs);
+  const auto ini = writeTextFile(dir + "/s.ini",
+                                 "[global]\nmax_queued_observations = 3\n[REPLAY]\n"
+                                 "driver = CRawlogReplaySensor\nrawlog = " +
+                                     dir + "/ten.rawlog\nprocess_rate = 500\n");
+  dynslam::runner::LiveSensors sensors(ini);
+  // Nobody takes observations while the replay (0.3 s at the recorded rate) delivers all ten.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  std::vector<double> stamps;
+  std::shared_ptr<mrpt::obs::CObservation> o;
+  while (sensors.next(1.0, o) == dynslam::runner::LiveSensors::Wait::Observation)
+    stamps.push_back(mrpt::Clock::toDouble(o->timestamp));
+  ASSERT_EQ(stamps.size(), 3u);
+  EXPECT_EQ(sensors.dropped(), 7u);
+  EXPECT_NEAR(stamps.front(), 10.0 + 7 / 30.0, 1e-6) << "the newest three, in time order";
+  EXPECT_NEAR(stamps.back(), 10.0 + 9 / 30.0, 1e-6);
+}
+
+TEST(LiveSensors, BadGlobalSettingsNameTheKeyAndTheFile) {
+  const std::string dir = dynslam::testing::scratchDir();
+  const auto make = [&](const std::string& global) {
+    return writeTextFile(dir + "/g.ini", "[global]\n" + global +
+                                             "\n[REPLAY]\ndriver = "
+                                             "CRawlogReplaySensor\nrawlog = missing.rawlog\n");
+  };
+  const auto error = [](const std::string& ini) {
+    try {
+      dynslam::runner::LiveSensors sensors(ini);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string e = error(make("max_queued_observations = 0"));
+  EXPECT_NE(e.find("[global] max_queued_observations of " + dir + "/g.ini"), std::string::npos)
+      << e;
+  e = error(make("merge_hold = 0.2"));
+  EXPECT_NE(e.find("[global] of " + dir + "/g.ini: unknown key 'merge_hold'"), std::string::npos)
+      << e;
 }
 
 }  // namespace

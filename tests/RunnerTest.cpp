@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -136,9 +137,32 @@ TEST(Runner, OutOfOrderTimestampsAreAnErrorAndKeepTheTrajectorySoFar) {
   const auto r = runCommand(
       dynslamCommand("--config " + ini + " --rawlog " + dir + "/bad.rawlog --out " + dir + "/out"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("out-of-order timestamp"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--rawlog " + dir + "/bad.rawlog: out-of-order timestamp"),
+            std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("observation #4"), std::string::npos) << r.output;
   EXPECT_EQ(lineCount(dir + "/out/trajectory.tum"), 3u) << "frames 0-2 were handed out before";
+}
+
+TEST(Runner, ANanImuSampleIsAnErrorNamingTheRawlogAndTheField) {
+  const std::string dir = scratchDir();
+  const auto path = dynslam::testing::handheldPath(6);
+  std::vector<mrpt::serialization::CSerializable::Ptr> objs;
+  for (int i = 0; i < 6; ++i) {
+    objs.push_back(
+        dynslam::testing::makeRoomScan(10.0 + i * 0.1, path[i], dynslam::testing::vgaCamera()));
+    auto imu = dynslam::testing::makeImu(10.05 + i * 0.1);
+    if (i == 3) imu->set(mrpt::obs::IMU_WZ, std::nan(""));
+    objs.push_back(imu);
+  }
+  dynslam::testing::writeRawlog(dir + "/nan.rawlog", objs);
+  const auto r =
+      runCommand(dynslamCommand("--config " + writeTextFile(dir + "/odo.ini", kOdometryIni) +
+                                " --rawlog " + dir + "/nan.rawlog --out " + dir + "/out"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("--rawlog " + dir + "/nan.rawlog: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("field IMU_WZ is not finite"), std::string::npos) << r.output;
+  EXPECT_GE(lineCount(dir + "/out/trajectory.tum"), 3u) << "the frames before the sample";
 }
 
 TEST(Runner, ConfigurationErrorsNameWhatIsWrong) {

@@ -20,9 +20,20 @@ LiveSensors::LiveSensors(const std::string& ini_file) {
   const mrpt::config::CConfigFile ini(ini_file);
   std::vector<std::string> sections;
   ini.getAllSections(sections);
+  std::vector<std::string> global_keys;
+  ini.getAllKeys("global", global_keys);
+  for (const auto& key : global_keys)
+    if (key != "merge_hold_s" && key != "max_queued_observations")
+      throw std::runtime_error("[global] of " + ini_file + ": unknown key '" + key +
+                               "' (known: merge_hold_s, max_queued_observations)");
   merge_hold_s_ = ini.read_double("global", "merge_hold_s", kMergeHoldS);
   if (!(merge_hold_s_ >= 0 && merge_hold_s_ <= 10))
     throw std::runtime_error("[global] merge_hold_s of " + ini_file + ": must be in [0, 10] s");
+  const long max_queued = ini.read_int("global", "max_queued_observations", kMaxQueued);
+  if (max_queued < 1 || max_queued > 1000000)
+    throw std::runtime_error("[global] max_queued_observations of " + ini_file +
+                             ": must be in [1, 1000000]");
+  max_queued_ = static_cast<std::size_t>(max_queued);
   std::vector<std::string> names;
   for (const auto& section : sections) {
     if (section.empty() || section == "global") continue;
@@ -65,6 +76,7 @@ void LiveSensors::run(mrpt::hwdrivers::CGenericSensor& sensor, const std::string
         for (const auto& [stamp, object] : got)
           if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object))
             queue_.emplace(mrpt::Clock::toDouble(obs->timestamp), Arrived{now, obs});
+        for (; queue_.size() > max_queued_; ++dropped_) queue_.erase(queue_.begin());
         if (!got.empty()) arrived_.notify_all();
         if (stopping_ || (replay && replay->finished())) break;
       }
@@ -110,6 +122,11 @@ void LiveSensors::stop() {
   }
   for (auto& t : threads_)
     if (t.joinable()) t.join();
+}
+
+std::size_t LiveSensors::dropped() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return dropped_;
 }
 
 }  // namespace dynslam::runner

@@ -101,7 +101,7 @@ void writeSummary(const std::string& path, const RunnerArgs& args, const RunReco
   if (args.sensors.empty())
     j.member("rawlog", args.rawlog);
   else
-    j.member("sensors", args.sensors);
+    j.member("sensors", args.sensors).member("sensor_observations_dropped", rec.sensor_drops);
   j.key("overrides").beginArray();
   for (const auto& o : args.overrides) j.value(o);
   j.endArray();

@@ -36,6 +36,7 @@ struct RunRecord {
   std::optional<ApeScore> ape;  ///< --gt
   std::string ape_error;        ///< --gt given but no score (nothing estimated, nothing associated)
   size_t map_points = 0;        ///< points in map.3Dscene's static map
+  size_t sensor_drops = 0;      ///< --sensors: observations dropped for a full queue
 
   /// Marks the run failed with `what`, unless it has failed or been interrupted already.
   void failIfOk(const std::string& what);

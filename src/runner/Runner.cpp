@@ -13,6 +13,7 @@
 #include <dynslam/core/Options.h>
 #include <dynslam/core/Pipeline.h>
 #include <dynslam/core/TrajectoryFile.h>
+#include <dynslam/io/ObservationConversion.h>
 #include <dynslam/io/RawlogSource.h>
 #include <dynslam/io/SensorSync.h>
 #include <dynslam/system/System.h>
@@ -133,8 +134,9 @@ class DynslamRun {
       try {
         system_->drain();  // after an error: what was made before it, then the sinks' ends
       } catch (const std::exception& e) {
-        std::cerr << "dynslam: error: " << e.what() << "\n";
-        rec_.failIfOk(e.what());
+        const std::string what = describe(e);
+        std::cerr << "dynslam: error: " << what << "\n";
+        rec_.failIfOk(what);
       }
     }
     rec_.poses = trajectory_ ? trajectory_->trajectory().count() : 0;
@@ -143,6 +145,11 @@ class DynslamRun {
       std::cerr << "dynslam: " << trajectory_->trajectory().path() << " holds the " << rec_.poses
                 << " poses estimated before the error\n";
     rec_.objects = trajectory_ ? trajectory_->objects() : 0;
+    if (sensors_ && (rec_.sensor_drops = sensors_->dropped()) > 0)
+      std::cerr << "dynslam: warning: the pipeline fell behind the sensors; " << rec_.sensor_drops
+                << " observations dropped, the oldest first ([global] "
+                << "max_queued_observations = " << sensors_->maxQueued() << " of " << args_.sensors
+                << ")\n";
     rec_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     rec_.cpu_s = processCpuSeconds() - startCpu_;
     finishOutputs();
@@ -318,8 +325,17 @@ class DynslamRun {
 
   void recordFailure(const std::exception& e) {
     rec_.status = "failed";
-    rec_.error = e.what();
-    std::cerr << "\ndynslam: error: " << e.what() << "\n";
+    rec_.error = describe(e);
+    std::cerr << "\ndynslam: error: " << rec_.error << "\n";
+  }
+
+  /// The error's message; one about the input's order or content also names the input, which
+  /// the synchronisation that found it does not know.
+  std::string describe(const std::exception& e) const {
+    if (!dynamic_cast<const io::SyncError*>(&e) && !dynamic_cast<const io::ConversionError*>(&e))
+      return e.what();
+    return (args_.sensors.empty() ? "--rawlog " + args_.rawlog : "--sensors " + args_.sensors) +
+           ": " + e.what();
   }
 
   /// What is written once the frames are done, also after an error or Ctrl-C (like
