@@ -56,6 +56,11 @@ Options:
   --no-map                   do not write map.3Dscene
   --map-every N              the static map takes one posed frame in N (default 10)
   --map-voxel M              the static map keeps one point per M-metre cube (default 0.05)
+  --map-max-points N         the static map's points at most; new cubes past it are refused
+                             (default 1000000, about 64 MB)
+  --map-track-points N       each trajectory line of the map (the camera's, each object's)
+                             keeps at most N points: one reaching N keeps every second point
+                             (default 20000)
   --quiet                    no progress line on stderr
   --gui                      a live MRPT 3-D window (needs an X display; without one:
                              xvfb-run -a dynslam --gui ...): what map.3Dscene will hold, the
@@ -98,8 +103,8 @@ int main(int argc, char** argv) {
   return dynslam::core::runProgram("dynslam", [&] {
     dynslam::core::CommandLine cl(
         {"--config", "--rawlog", "--out", "--max-frames", "--frames", "--gt", "--map-every",
-         "--map-voxel", "--gui-rate", "--gui-screenshot", "--sensors", "--record",
-         "--sensor-timeout"},
+         "--map-voxel", "--map-max-points", "--map-track-points", "--gui-rate", "--gui-screenshot",
+         "--sensors", "--record", "--sensor-timeout"},
         {"--quiet", "--realtime", "--no-video", "--no-map", "--gui", "--print-config"}, {"--set"});
     cl.parse(argc, argv);
     if (cl.helpRequested()) {
@@ -134,6 +139,12 @@ int main(int argc, char** argv) {
     args.map_voxel_size = cl.optionalDouble("--map-voxel").value_or(args.map_voxel_size);
     if (args.map_every_n_frames < 1 || !(args.map_voxel_size > 0))
       throw dynslam::core::UsageError("--map-every must be >= 1 and --map-voxel > 0");
+    const long long max_points = cl.optionalInteger("--map-max-points").value_or(1000000);
+    const long long track_points = cl.optionalInteger("--map-track-points").value_or(20000);
+    if (max_points < 1 || track_points < 2)
+      throw dynslam::core::UsageError("--map-max-points must be >= 1 and --map-track-points >= 2");
+    args.map_max_points = static_cast<std::size_t>(max_points);
+    args.map_max_track_points = static_cast<std::size_t>(track_points);
     args.gui_screenshot = cl.valueOr("--gui-screenshot", "");
     args.gui = cl.has("--gui") || !args.gui_screenshot.empty();
     args.gui_max_rate_hz = cl.optionalDouble("--gui-rate").value_or(args.gui_max_rate_hz);

@@ -68,8 +68,8 @@ void writeStages(core::JsonWriter& j, const core::Pipeline* pipeline) {
     const auto stats = pipeline->statistics();
     for (size_t i = 0; i < pipeline->times().size(); ++i) {
       const auto& t = pipeline->times()[i];
-      j.beginObject().member("name", t.name).member("median_ms", median(t.ms));
-      j.member("frames", t.ms.size());
+      j.beginObject().member("name", t.name).member("median_ms", median(t.ms.samples()));
+      j.member("frames", t.ms.count());
       if (!stats[i].empty()) {
         j.key("statistics").beginObject();
         for (const auto& [name, value] : stats[i]) j.member(name, value);

@@ -170,6 +170,8 @@ class DynslamRun {
     settings.map = args_.map || args_.gui;  // the live view shows the map without saving it
     settings.map_every_n_frames = args_.map_every_n_frames;
     settings.map_voxel_size = args_.map_voxel_size;
+    settings.map_max_points = args_.map_max_points;
+    settings.map_max_track_points = args_.map_max_track_points;
     settings.max_frames = args_.max_frames;
     if (args_.realtime)
       settings.before_frame = [this](core::Frame& f) { cameraRate_.waitFor(f.t, rec_); };

@@ -18,8 +18,10 @@ struct RunnerArgs {
   bool frames_video = true;  ///< with frames_dir: also frames_dir/annotated.avi (Motion-JPEG)
   std::string ground_truth;  ///< non-empty: TUM file; APE (SE(3)-aligned) into summary.json
   bool map = true;           ///< write out/map.3Dscene (viz::MapSceneBuilder)
-  int map_every_n_frames = 10;   ///< static points from one posed frame in this many
-  double map_voxel_size = 0.05;  ///< m, the static map's voxel grid
+  int map_every_n_frames = 10;               ///< static points from one posed frame in this many
+  double map_voxel_size = 0.05;              ///< m, the static map's voxel grid
+  std::size_t map_max_points = 1000000;      ///< the static map's voxels at most
+  std::size_t map_max_track_points = 20000;  ///< each trajectory line's points at most
   /// Play the rawlog at camera rate (each frame handed to the pipeline no earlier than its
   /// stamp says, relative to the first), as a live camera would; the lag behind that schedule
   /// goes into summary.json. Off: as fast as the stages go.

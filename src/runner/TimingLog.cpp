@@ -19,8 +19,7 @@ TimingLog::TimingLog(const std::string& path, const core::Pipeline& pipeline)
 void TimingLog::append(std::size_t frame, double t, const core::Pipeline& pipeline,
                        double pipeline_ms) {
   out_ << frame << ',' << std::fixed << std::setprecision(6) << t << std::setprecision(3);
-  for (const auto& stage : pipeline.times())
-    out_ << ',' << (stage.ms.empty() ? 0.0 : stage.ms.back());
+  for (const auto& stage : pipeline.times()) out_ << ',' << stage.ms.last();
   out_ << ',' << pipeline_ms << '\n';
   // Flushed per row, one write() a row: a kill -9 leaves every row before it whole (flushed
   // only when the buffer filled, the last row could be cut anywhere).

@@ -50,7 +50,7 @@ Pipeline::Pipeline(const IniConfig& cfg, const StageRegistry& registry) {
     stage->configure(cfg, e.section);
     stages_.push_back(std::move(stage));
     sections_.push_back(e.section);
-    times_.push_back({e.section, {}});
+    times_.push_back({e.section, SampleReservoir()});
   }
 }
 
@@ -63,7 +63,7 @@ void Pipeline::process(Frame& frame) {
   for (size_t i = 0; i < stages_.size(); ++i) {
     const auto start = Clock::now();
     stages_[i]->process(frame);
-    times_[i].ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    times_[i].ms.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
   }
 }
 

@@ -57,7 +57,7 @@ TEST(Pipeline, RunsStagesInIniOrderWithTheirOwnSections) {
   EXPECT_TRUE(p.estimatesPose());
   ASSERT_EQ(p.times().size(), 3u);
   EXPECT_EQ(p.times()[1].name, "second");
-  EXPECT_EQ(p.times()[1].ms.size(), 1u);
+  EXPECT_EQ(p.times()[1].ms.count(), 1u);
   const auto used = p.sectionsUsed();
   EXPECT_NO_THROW(rejectUnknownSections(cfg, used));
 }

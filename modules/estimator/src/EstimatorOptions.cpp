@@ -187,6 +187,9 @@ void EstimatorOptions::describeImu(core::OptionVisitor& v) {
         "m/s^3/sqrt(Hz); accelerometer bias random walk");
   v.key("gyro_random_walk", n.gyro_random_walk, positive,
         "rad/s^2/sqrt(Hz); gyroscope bias random walk");
+  v.key("imu_max_preintegration", imu_max_preintegration_s, positive,
+        "s; an IMU preintegration between keyframes spanning longer is dropped with its samples "
+        "(that keyframe pair gets no IMU factor): bounds its memory when no keyframe comes");
   v.key("gravity", imu_init.gravity_magnitude, positive, "m/s^2; local gravity");
   v.key("init_min_acceleration_rms", imu_init.min_acceleration_rms, Range::atLeast(0),
         "m/s^2; IMU initialization waits for this much motion (0: still starts accepted)");

@@ -123,7 +123,9 @@ void EstimatorStage::process(core::Frame& frame) {
 void EstimatorStage::takeSensorData(const core::Frame& frame) {
   if (options_.use_imu && !imu_) {
     for (const auto& s : frame.imu)
-      if (s.has_gyro && s.has_acc) imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise);
+      if (s.has_gyro && s.has_acc)
+        imu_ = std::make_unique<KeyframeImu>(options_.window.imu_noise, KeyframeImu::kMaxGapS,
+                                             options_.imu_max_preintegration_s);
   }
   if (imu_) imu_->addSamples(frame.imu, frame.index);
   if (options_.use_gnss && !gnss_ && !frame.gnss.empty())
@@ -205,7 +207,7 @@ EstimatorStage::KeyframeOutcome EstimatorStage::makeKeyframe(core::Frame& frame,
   record.iterations = report.iterations;
   record.rigid_objects = report.rigid_objects;
   ++keyframes_;
-  solve_ms_.push_back(report.solve_ms);
+  solve_ms_.add(report.solve_ms);
   rigid_objects_solved_ += std::size_t(report.rigid_objects);
   detectFailure(report, T_wb);
   // Whatever failed, the pose to go on from is one that was plausible: the tracked pose when
@@ -343,7 +345,7 @@ void EstimatorStage::finish() {
   }
   MRPT_LOG_INFO_STREAM(
       frames_ << " frames, " << keyframes_ << " keyframes, solve median "
-              << core::upperMedian(solve_ms_) << " ms, " << pnp_failures_
+              << core::upperMedian(solve_ms_.samples()) << " ms, " << pnp_failures_
               << " frames without a PnP pose, " << resets_ << " restarts; IMU "
               << (imu_initialized_at_ >= 0
                       ? "initialized at " + std::to_string(imu_initialized_at_) + " s"
@@ -353,9 +355,8 @@ void EstimatorStage::finish() {
 std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
   std::vector<std::pair<std::string, double>> out = {
       {"keyframes", double(keyframes_)},
-      {"solve_ms_median", core::upperMedian(solve_ms_)},
-      {"solve_ms_max",
-       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end())},
+      {"solve_ms_median", core::upperMedian(solve_ms_.samples())},
+      {"solve_ms_max", solve_ms_.max()},
       {"pnp_failures", double(pnp_failures_)},
       {"resets", double(resets_)},
       {"imu_initialized_at", imu_initialized_at_},
@@ -363,6 +364,7 @@ std::vector<std::pair<std::string, double>> EstimatorStage::statistics() const {
       {"nonrigid_per_keyframe", keyframes_ ? double(nonrigid_observations_) / keyframes_ : 0.0},
       {"rigid_objects_per_keyframe", keyframes_ ? double(rigid_objects_solved_) / keyframes_ : 0.0},
       {"imu_gaps", imu_ ? double(imu_->gaps()) : 0.0},
+      {"imu_overlong", imu_ ? double(imu_->overlong()) : 0.0},
       {"blind_frames", double(blind_frames_)},
       {"landmarks_dropped_moving", double(landmarks_dropped_)},
       {"gnss_aligned_at", gnss_aligned_at_},

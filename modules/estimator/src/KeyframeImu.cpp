@@ -19,6 +19,11 @@ void KeyframeImu::addSamples(const std::vector<core::ImuSample>& samples, std::s
       broken_ = true;
       ++gaps_;
     }
+    if (current_ && !broken_ && s.t - current_start_ > max_interval_) {
+      broken_ = true;
+      ++overlong_;
+      current_.reset();  // its samples go with it
+    }
     if (current_ && !broken_) current_->push(s.t - current_end_, s.acc, s.gyro);
     current_end_ = s.t;
     last_ = Sample{s.t, s.acc, s.gyro};
@@ -29,11 +34,13 @@ std::shared_ptr<ImuPreintegration> KeyframeImu::cutAt(double t, const Eigen::Vec
                                                       const Eigen::Vector3d& bg) {
   if (!last_) return nullptr;
   // Samples missing at t: nothing to close the interval with.
-  std::shared_ptr<ImuPreintegration> done = broken_ || missingAt(t) ? nullptr : current_;
+  const bool overlong = t - current_start_ > max_interval_;
+  std::shared_ptr<ImuPreintegration> done =
+      broken_ || missingAt(t) || overlong ? nullptr : current_;
   if (done && t > current_end_) done->push(t - current_end_, last_->acc, last_->gyr);
   broken_ = false;
   current_ = std::make_shared<ImuPreintegration>(last_->acc, last_->gyr, ba, bg, noise_);
-  current_end_ = t;
+  current_start_ = current_end_ = t;
   return done;
 }
 

@@ -72,3 +72,22 @@ TEST(KeyframeImu, NonFiniteAndOutOfOrderSamplesNameTheFrame) {
   bad[0].gyro.x() = NAN;
   EXPECT_THROW(imu.addSamples(bad, 8), std::runtime_error);
 }
+
+TEST(KeyframeImu, APreintegrationLongerThanTheLimitIsDroppedAndTheNextStartsClean) {
+  KeyframeImu imu(ImuNoise{}, KeyframeImu::kMaxGapS, 2.0);
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  imu.addSamples(samples(0.0, 0.1, 200, 0.5), 0);
+  imu.cutAt(0.1, zero, zero);
+  // Three seconds without a keyframe (tracking lost): past the 2 s limit it is dropped.
+  imu.addSamples(samples(0.105, 1.9, 200, 0.5), 1);
+  EXPECT_TRUE(imu.peekAt(1.9)) << "still inside the limit";
+  imu.addSamples(samples(1.905, 3.1, 200, 0.5), 2);
+  EXPECT_EQ(imu.peekAt(3.1), nullptr);
+  EXPECT_EQ(imu.cutAt(3.1, zero, zero), nullptr) << "that keyframe pair gets no IMU factor";
+  EXPECT_EQ(imu.overlong(), 1u);
+  EXPECT_EQ(imu.gaps(), 0u) << "no sample was missing";
+  imu.addSamples(samples(3.105, 3.4, 200, 0.5), 3);
+  const auto next = imu.cutAt(3.4, zero, zero);
+  ASSERT_TRUE(next) << "the next interval is whole again";
+  EXPECT_NEAR(next->sumDt(), 0.3, 1e-9);
+}

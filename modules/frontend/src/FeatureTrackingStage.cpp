@@ -108,8 +108,8 @@ void FeatureTrackingStage::process(core::Frame& frame) {
   lostResidual_ += size_t(s.lost_residual);
   lostRansac_ += size_t(s.lost_ransac);
   lostOcclusion_ += size_t(s.lost_occlusion);
-  trackingMs_.push_back(s.ms_pyramid + s.ms_klt + s.ms_ransac);
-  extractionMs_.push_back(s.ms_detect);
+  trackingMs_.add(s.ms_pyramid + s.ms_klt + s.ms_ransac);
+  extractionMs_.add(s.ms_detect);
   std::map<std::int64_t, int> alive;
   for (const auto& f : frame.features) alive.emplace(f.id, f.track_length);
   for (const auto& [id, length] : alive_)
@@ -144,8 +144,8 @@ std::vector<std::pair<std::string, double>> FeatureTrackingStage::statistics() c
           {"lost_residual_fraction", double(lostResidual_) / in},
           {"lost_ransac_fraction", double(lostRansac_) / in},
           {"lost_occlusion_edge_fraction", double(lostOcclusion_) / in},
-          {"tracking_ms_median", core::upperMedian(trackingMs_)},
-          {"extraction_ms_median", core::upperMedian(extractionMs_)}};
+          {"tracking_ms_median", core::upperMedian(trackingMs_.samples())},
+          {"extraction_ms_median", core::upperMedian(extractionMs_.samples())}};
 }
 
 }  // namespace dynslam::frontend

@@ -51,6 +51,8 @@ struct System::Impl {
       viz::MapSceneOptions options;
       options.every_n_frames = settings.map_every_n_frames;
       options.voxel_size = settings.map_voxel_size;
+      options.max_points = settings.map_max_points;
+      options.max_track_points = settings.map_max_track_points;
       map.emplace(options);
     }
   }

@@ -77,16 +77,30 @@ mrpt::opengl::CSetOfLines::Ptr polyline(const std::vector<Eigen::Vector3f>& poin
 std::string objectTrackName(int id) { return "object_" + std::to_string(id); }
 
 MapSceneBuilder::MapSceneBuilder(MapSceneOptions options) : options_(options) {
-  if (options_.every_n_frames < 1 || options_.pixel_stride < 1 || !(options_.voxel_size > 0))
+  if (options_.every_n_frames < 1 || options_.pixel_stride < 1 || !(options_.voxel_size > 0) ||
+      options_.max_track_points < 2)
     throw std::invalid_argument(
-        "MapSceneBuilder: every_n_frames and pixel_stride must be >= 1 and voxel_size > 0");
+        "MapSceneBuilder: every_n_frames and pixel_stride must be >= 1, voxel_size > 0 and "
+        "max_track_points >= 2");
+}
+
+void MapSceneBuilder::appendToTrack(std::vector<Eigen::Vector3f>& track,
+                                    const Eigen::Vector3f& point) const {
+  track.push_back(point);
+  if (track.size() <= options_.max_track_points) return;
+  // Every second point, the first and the newest kept: the line's extent stays whole.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i + 1 < track.size(); i += 2) track[kept++] = track[i];
+  track[kept++] = track.back();
+  track.resize(kept);
+  track.shrink_to_fit();
 }
 
 void MapSceneBuilder::addFrame(const core::Frame& frame) {
   for (const auto& o : frame.object_poses)
-    objects_[o.object_id].push_back(o.T_world_object.translation().cast<float>());
+    appendToTrack(objects_[o.object_id], o.T_world_object.translation().cast<float>());
   if (!frame.T_world_camera) return;
-  camera_.push_back(frame.T_world_camera->translation().cast<float>());
+  appendToTrack(camera_, frame.T_world_camera->translation().cast<float>());
   if (posed_frames_++ % static_cast<size_t>(options_.every_n_frames) == 0) addStaticPoints(frame);
 }
 

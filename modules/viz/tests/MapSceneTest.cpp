@@ -97,6 +97,34 @@ TEST(MapScene, ACoastingTracksBoxIsKeptOutAndARevisitedWallAddsNoPoints) {
   EXPECT_EQ(full.pointCount(), before) << "same wall, same voxels";
 }
 
+TEST(MapScene, ALongTrajectoryKeepsItsExtentWithinTheTrackPointLimit) {
+  viz::MapSceneOptions options;
+  options.every_n_frames = 100;
+  options.max_track_points = 8;
+  viz::MapSceneBuilder builder(options);
+  for (std::size_t i = 0; i < 50; ++i) {
+    builder.addFrame(wallFrame(i, 0.1 * static_cast<double>(i)));
+    ASSERT_LE(builder.cameraPoses(), 8u) << "after frame " << i;
+  }
+  EXPECT_GE(builder.cameraPoses(), 4u);
+  const std::string path = dynslam::testing::scratchDir() + "/map.3Dscene";
+  builder.save(path);
+  mrpt::opengl::COpenGLScene scene;
+  ASSERT_TRUE(scene.loadFromFile(path));
+  auto camera = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
+      scene.getByName(viz::kCameraTrajectoryName));
+  ASSERT_TRUE(camera);
+  double x0, y0, z0, x1, y1, z1;
+  camera->getLineByIndex(0, x0, y0, z0, x1, y1, z1);
+  EXPECT_NEAR(x0, 0.0, 1e-6) << "the first pose stays";
+  camera->getLineByIndex(camera->getLineCount() - 1, x0, y0, z0, x1, y1, z1);
+  EXPECT_NEAR(x1, 4.9, 1e-6) << "the newest pose stays";
+  for (std::size_t i = 0; i < camera->getLineCount(); ++i) {
+    camera->getLineByIndex(i, x0, y0, z0, x1, y1, z1);
+    EXPECT_GT(x1, x0) << "in order, segment " << i;
+  }
+}
+
 TEST(MapScene, SavedSceneHoldsTheTrajectoryAndEveryObjectTrack) {
   viz::MapSceneOptions options;
   options.every_n_frames = 2;

@@ -8,6 +8,7 @@
 // as "Class:Section" so two instances of one class can be configured apart.
 #include <dynslam/core/Config.h>
 #include <dynslam/core/Frame.h>
+#include <dynslam/core/SampleReservoir.h>
 
 #include <memory>
 #include <string>
@@ -29,10 +30,10 @@ struct StageEntry {
 /// programs that build some of the stages themselves (the benches) as Pipeline would.
 std::vector<StageEntry> pipelineStageEntries(const IniConfig& cfg);
 
-/// Wall-clock time each stage spent on each frame, in milliseconds.
+/// Wall-clock time each stage spent on each frame, in milliseconds (bounded: SampleReservoir).
 struct StageTimes {
   std::string name;
-  std::vector<double> ms;
+  SampleReservoir ms;
 };
 
 class Pipeline {

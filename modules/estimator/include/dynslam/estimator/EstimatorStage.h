@@ -19,6 +19,7 @@
 // sensor poses. Without an IMU (e.g. 7-Scenes, TUM's accelerometer-only IMU) it stays RGB-D
 // only.
 #include <dynslam/core/Options.h>
+#include <dynslam/core/SampleReservoir.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/estimator/FeatureRouting.h>
 #include <dynslam/estimator/ImuInitializer.h>
@@ -49,6 +50,10 @@ struct EstimatorOptions : core::Options {
   /// walker entering the view undetected, a detector miss).
   bool drop_moving_landmarks = true;
   bool use_imu = true;
+  /// A preintegration spanning longer (no keyframe: tracking lost, frames missing) is dropped
+  /// with its samples: its memory stays bounded, and past ~10 s the bias drift makes it
+  /// worthless (VINS-Fusion skips IMU factors over 10 s too).
+  double imu_max_preintegration_s = 10.0;
   ImuInitializerOptions imu_init;
   int min_pnp_inliers = 15;
   double pnp_threshold_px = 3.0;
@@ -175,7 +180,7 @@ class EstimatorStage : public core::Stage {
   ObjectTrajectories objects_;
   KeyframeSelector selector_;
   std::optional<Eigen::Isometry3d> last_body_, previous_body_;  // for the motion prediction
-  std::vector<double> solve_ms_;
+  core::SampleReservoir solve_ms_;
   std::size_t keyframes_ = 0, pnp_failures_ = 0, resets_ = 0, frames_ = 0;
   std::size_t imu_init_attempts_ = 0, nonrigid_observations_ = 0, blind_frames_ = 0;
   std::size_t rigid_objects_solved_ = 0;  // sum over keyframes of SolveReport::rigid_objects

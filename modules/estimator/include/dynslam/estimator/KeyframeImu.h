@@ -7,6 +7,8 @@
 // A gap in the samples longer than max_gap (a dropped IMU stream) breaks the current
 // preintegration: integrating across it would pretend to know the motion. The keyframe pair it
 // spans then gets no IMU factor (cutAt returns null), and predictions fall back to vision.
+// A preintegration longer than max_interval (no keyframe for that long) is broken the same way
+// and its samples freed, so its memory is bounded by max_interval times the IMU rate.
 #include <dynslam/core/Frame.h>
 #include <dynslam/estimator/imu/ImuPreintegration.h>
 
@@ -17,8 +19,11 @@ namespace dynslam::estimator {
 
 class KeyframeImu {
  public:
-  explicit KeyframeImu(const ImuNoise& noise, double max_gap = 0.05)
-      : noise_(noise), max_gap_(max_gap) {}
+  static constexpr double kMaxGapS = 0.05;
+  static constexpr double kMaxIntervalS = 10.0;
+  explicit KeyframeImu(const ImuNoise& noise, double max_gap = kMaxGapS,
+                       double max_interval = kMaxIntervalS)
+      : noise_(noise), max_gap_(max_gap), max_interval_(max_interval) {}
 
   /// Adds one frame's samples (those with gyro and accelerometer). Throws std::runtime_error
   /// naming the frame and the sample for a non-finite value or a time that does not increase.
@@ -28,6 +33,8 @@ class KeyframeImu {
   bool hasSamples() const { return last_.has_value(); }
   /// Gaps longer than max_gap seen so far.
   std::size_t gaps() const { return gaps_; }
+  /// Preintegrations dropped for spanning more than max_interval.
+  std::size_t overlong() const { return overlong_; }
 
   /// Ends the current preintegration at time t (null if none had started, the first keyframe,
   /// if a gap broke it, or if t lies more than max_gap past the last sample) and starts the
@@ -50,12 +57,13 @@ class KeyframeImu {
     Eigen::Vector3d acc, gyr;
   };
   ImuNoise noise_;
-  double max_gap_;
+  double max_gap_, max_interval_;
   bool broken_ = false;  // the current preintegration spans a gap in the samples
-  std::size_t gaps_ = 0;
+  std::size_t gaps_ = 0, overlong_ = 0;
   std::optional<Sample> last_;
   std::shared_ptr<ImuPreintegration> current_;
-  double current_end_ = 0;  // time of the last sample pushed into current_
+  double current_start_ = 0;  // the keyframe time current_ starts at
+  double current_end_ = 0;    // time of the last sample pushed into current_
 };
 
 }  // namespace dynslam::estimator

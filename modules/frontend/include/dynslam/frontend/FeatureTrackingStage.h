@@ -5,6 +5,7 @@
 // Segmentation so the fundamental-matrix RANSAC sees the object masks; without them every
 // feature is a static candidate.
 #include <dynslam/core/Options.h>
+#include <dynslam/core/SampleReservoir.h>
 #include <dynslam/core/Stage.h>
 #include <dynslam/frontend/FeatureTracker.h>
 
@@ -46,7 +47,7 @@ class FeatureTrackingStage : public core::Stage {
   std::map<std::int64_t, int> alive_;  // id -> track_length in the last frame
   double endedLengthSum_ = 0;
   size_t ended_ = 0;
-  std::vector<double> trackingMs_, extractionMs_;  // per frame, FeatureTracker::lastStats
+  core::SampleReservoir trackingMs_, extractionMs_;  // per frame, FeatureTracker::lastStats
 };
 
 }  // namespace dynslam::frontend

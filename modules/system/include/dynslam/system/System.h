@@ -54,6 +54,8 @@ struct SystemSettings {
   bool map = true;
   int map_every_n_frames = 10;
   double map_voxel_size = 0.05;
+  std::size_t map_max_points = 1000000;      ///< the static map's voxels at most
+  std::size_t map_max_track_points = 20000;  ///< points of each trajectory line at most
   /// Called on the processing thread before each frame enters the pipeline (the dynslam
   /// program's --realtime holds a rawlog's frames back to their recorded rate here).
   std::function<void(core::Frame&)> before_frame;

@@ -43,6 +43,10 @@ struct MapSceneOptions {
   /// with --no-map); past this, new voxels are refused (counted) and the existing ones still
   /// average.
   std::size_t max_points = 1000000;
+  /// Points of each trajectory line (the camera's, each object's) at most: one reaching it
+  /// keeps every second point, so a long run keeps its whole extent at half the resolution
+  /// (20,000 is 11 min of a 30 Hz camera at full resolution; 12 bytes a point).
+  std::size_t max_track_points = 20000;
 };
 
 class MapSceneBuilder {
@@ -77,6 +81,7 @@ class MapSceneBuilder {
     std::uint32_t count = 0;
   };
   void addStaticPoints(const core::Frame& frame);
+  void appendToTrack(std::vector<Eigen::Vector3f>& track, const Eigen::Vector3f& point) const;
 
   MapSceneOptions options_;
   std::size_t posed_frames_ = 0;
