@@ -41,6 +41,21 @@ void addMaskedPerson(core::Frame& f) {
   f.object_masks.push_back(m);
 }
 
+/// The builder's scene as a viewer reads it: saved, then loaded from the file.
+mrpt::opengl::COpenGLScene::Ptr savedScene(const viz::MapSceneBuilder& builder) {
+  const std::string path = dynslam::testing::scratchDir() + "/map.3Dscene";
+  builder.save(path);
+  auto scene = mrpt::opengl::COpenGLScene::Create();
+  EXPECT_TRUE(scene->loadFromFile(path)) << path;
+  return scene;
+}
+
+/// The scene's object called `name` as a T, null when there is none of that type.
+template <class T>
+std::shared_ptr<T> named(mrpt::opengl::COpenGLScene& scene, const std::string& name) {
+  return std::dynamic_pointer_cast<T>(scene.getByName(name));
+}
+
 viz::MapSceneOptions everyPixel() {
   viz::MapSceneOptions o;
   o.every_n_frames = 1;
@@ -55,13 +70,7 @@ TEST(MapScene, ObjectPixelsStayOutOfTheStaticMap) {
   core::Frame f = wallFrame(0, 0.0);
   addMaskedPerson(f);
   builder.addFrame(f);
-  const std::string path = dynslam::testing::scratchDir() + "/map.3Dscene";
-  builder.save(path);
-
-  mrpt::opengl::COpenGLScene scene;
-  ASSERT_TRUE(scene.loadFromFile(path)) << path;
-  auto cloud = std::dynamic_pointer_cast<mrpt::opengl::CPointCloudColoured>(
-      scene.getByName(viz::kStaticMapName));
+  auto cloud = named<mrpt::opengl::CPointCloudColoured>(*savedScene(builder), viz::kStaticMapName);
   ASSERT_TRUE(cloud) << "no CPointCloudColoured named " << viz::kStaticMapName;
   ASSERT_GT(cloud->size(), 100u);
   EXPECT_EQ(cloud->size(), builder.pointCount());
@@ -107,12 +116,7 @@ TEST(MapScene, ALongTrajectoryKeepsItsExtentWithinTheTrackPointLimit) {
     ASSERT_LE(builder.cameraPoses(), 8u) << "after frame " << i;
   }
   EXPECT_GE(builder.cameraPoses(), 4u);
-  const std::string path = dynslam::testing::scratchDir() + "/map.3Dscene";
-  builder.save(path);
-  mrpt::opengl::COpenGLScene scene;
-  ASSERT_TRUE(scene.loadFromFile(path));
-  auto camera = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
-      scene.getByName(viz::kCameraTrajectoryName));
+  auto camera = named<mrpt::opengl::CSetOfLines>(*savedScene(builder), viz::kCameraTrajectoryName);
   ASSERT_TRUE(camera);
   double x0, y0, z0, x1, y1, z1;
   camera->getLineByIndex(0, x0, y0, z0, x1, y1, z1);
@@ -141,31 +145,24 @@ TEST(MapScene, SavedSceneHoldsTheTrajectoryAndEveryObjectTrack) {
   EXPECT_EQ(builder.cameraPoses(), 5u);
   EXPECT_EQ(builder.objectTracks(), 2u);
 
-  const std::string path = dynslam::testing::scratchDir() + "/map.3Dscene";
-  builder.save(path);
-  mrpt::opengl::COpenGLScene scene;
-  ASSERT_TRUE(scene.loadFromFile(path));
-  auto camera = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
-      scene.getByName(viz::kCameraTrajectoryName));
+  const auto scene = savedScene(builder);
+  auto camera = named<mrpt::opengl::CSetOfLines>(*scene, viz::kCameraTrajectoryName);
   ASSERT_TRUE(camera);
   ASSERT_EQ(camera->getLineCount(), 4u) << "5 poses, 4 segments";
   double x0, y0, z0, x1, y1, z1;
   camera->getLineByIndex(3, x0, y0, z0, x1, y1, z1);
   EXPECT_NEAR(x1, 0.4, 1e-6);
-  auto seven = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
-      scene.getByName(viz::objectTrackName(7)));
+  auto seven = named<mrpt::opengl::CSetOfLines>(*scene, viz::objectTrackName(7));
   ASSERT_TRUE(seven) << viz::objectTrackName(7);
   EXPECT_EQ(seven->getLineCount(), 4u);
   seven->getLineByIndex(3, x0, y0, z0, x1, y1, z1);
   EXPECT_NEAR(x1, 0.8, 1e-6);
   EXPECT_NEAR(z1, 1.5, 1e-6);
-  auto nine = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
-      scene.getByName(viz::objectTrackName(9)));
+  auto nine = named<mrpt::opengl::CSetOfLines>(*scene, viz::objectTrackName(9));
   ASSERT_TRUE(nine) << "an object seen once is still in the scene";
   EXPECT_EQ(nine->getLineCount(), 1u);
   EXPECT_NE(seven->getColor_u8(), nine->getColor_u8()) << "one colour per object";
-  EXPECT_TRUE(std::dynamic_pointer_cast<mrpt::opengl::CPointCloudColoured>(
-      scene.getByName(viz::kStaticMapName)));
+  EXPECT_TRUE(named<mrpt::opengl::CPointCloudColoured>(*scene, viz::kStaticMapName));
 }
 
 TEST(MapScene, UnwritablePathIsNamed) {
