@@ -83,4 +83,13 @@ std::optional<long long> CommandLine::optionalInteger(const std::string& flag) c
   return v;
 }
 
+std::string userMessage(const std::string& what) {
+  if (what.rfind("==== MRPT exception", 0) != 0) return what;
+  const auto message = what.find("Message:");
+  const auto start =
+      message == std::string::npos ? message : what.find_first_not_of(' ', message + 8);
+  if (start == std::string::npos) return what;
+  return what.substr(start, what.find('\n', start) - start);
+}
+
 }  // namespace dynslam::core

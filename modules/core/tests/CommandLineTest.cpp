@@ -41,3 +41,20 @@ TEST(CommandLine, BadInputIsAUsageErrorNamingTheFlag) {
   EXPECT_THROW(parse({"--n", "3x"}).optionalInteger("--n"), UsageError);
   EXPECT_THROW(parse({}).required("--in"), UsageError);
 }
+
+TEST(CommandLine, AnMrptExceptionReachesTheUserAsItsMessageLine) {
+  const std::string mrpt =
+      "==== MRPT exception ====\n"
+      "Message:  Cannot open 'x.png'\n"
+      "Location: mrpt::img::CImage::loadFromFile\n"
+      "Call stack backtrace:\n[0x1] main\n";
+  EXPECT_EQ(dynslam::core::userMessage(mrpt), "Cannot open 'x.png'");
+  const std::string ours = "[Estimator] window_size of a.ini: must be >= 2\n(read: 1)";
+  EXPECT_EQ(dynslam::core::userMessage(ours), ours) << "other messages unchanged";
+  // runProgram prints the same.
+  testing::internal::CaptureStderr();
+  const int code =
+      dynslam::core::runProgram("prog", [&]() -> int { throw std::runtime_error(mrpt); });
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "prog: error: Cannot open 'x.png'\n");
+}

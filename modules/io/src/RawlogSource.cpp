@@ -2,6 +2,8 @@
 
 #include "GzReadStream.h"
 
+#include <dynslam/core/CommandLine.h>
+
 #include <mrpt/io/lazy_load_path.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -12,20 +14,6 @@
 namespace fs = std::filesystem;
 
 namespace dynslam::io {
-namespace {
-
-/// The message of an exception in one line. MRPT's own start with a "==== MRPT exception ===="
-/// banner, then "Message:  ...", the location and a backtrace: only the message says anything
-/// to a user.
-std::string oneLineMessage(const std::string& s) {
-  const auto message = s.find("Message:");
-  const auto start = message == std::string::npos ? message : s.find_first_not_of(' ', message + 8);
-  const bool mrpt = s.rfind("==== MRPT exception", 0) == 0 && start != std::string::npos;
-  const std::string text = mrpt ? s.substr(start) : s;
-  return text.substr(0, text.find('\n'));
-}
-
-}  // namespace
 
 RawlogSource::RawlogSource(const std::string& path, std::size_t max_field_bytes) : path_(path) {
   if (!fs::is_regular_file(path)) throw RawlogError("rawlog '" + path + "' does not exist");
@@ -65,7 +53,7 @@ mrpt::obs::CObservation::Ptr RawlogSource::next() {
       // MRPT wraps the guard's exception in its own, so take the refusal from the guard.
       const std::string zerr = stream_->zlibError();
       const std::string why =
-          guard.refused() ? guard.refusal() : (zerr.empty() ? oneLineMessage(e.what()) : zerr);
+          guard.refused() ? guard.refusal() : (zerr.empty() ? core::userMessage(e.what()) : zerr);
       throw RawlogError("rawlog '" + path_ + "' is truncated or corrupt at entry #" +
                         std::to_string(entries_) + " (byte " +
                         std::to_string(stream_->compressedPosition()) + " of " +

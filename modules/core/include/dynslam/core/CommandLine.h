@@ -44,8 +44,14 @@ class CommandLine {
   bool help_ = false;
 };
 
-/// Runs a program body, printing "<program>: error: <what>" to stderr on an exception and
-/// returning 2 for a UsageError, 1 for anything else; otherwise what the body returned.
+/// An exception's message as a user should read it. MRPT's start with a "==== MRPT exception
+/// ====" banner, then "Message:  ...", the location and a backtrace: of those only the message
+/// line; any other message unchanged.
+std::string userMessage(const std::string& what);
+
+/// Runs a program body, printing "<program>: error: <what>" (userMessage) to stderr on an
+/// exception and returning 2 for a UsageError, 1 for anything else; otherwise what the body
+/// returned.
 template <typename Body>
 int runProgram(const char* program, Body&& body);
 
@@ -62,7 +68,7 @@ int dynslam::core::runProgram(const char* program, Body&& body) {
     std::cerr << program << ": error: " << e.what() << " (see --help)\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << program << ": error: " << e.what() << "\n";
+    std::cerr << program << ": error: " << userMessage(e.what()) << "\n";
     return 1;
   }
 }
