@@ -174,10 +174,13 @@ TEST(LiveSensors, BadGlobalSettingsNameTheKeyAndTheFile) {
     return std::string();
   };
   std::string e = error(make("max_queued_observations = 0"));
-  EXPECT_NE(e.find("[global] max_queued_observations of " + dir + "/g.ini"), std::string::npos)
+  EXPECT_NE(
+      e.find("[global] in " + dir + "/g.ini: max_queued_observations = 0: must be in [1, 1000000]"),
+      std::string::npos)
       << e;
   e = error(make("merge_hold = 0.2"));
-  EXPECT_NE(e.find("[global] of " + dir + "/g.ini: unknown key 'merge_hold'"), std::string::npos)
+  EXPECT_NE(e.find("unknown key 'merge_hold' in section [global] of " + dir + "/g.ini"),
+            std::string::npos)
       << e;
 }
 

@@ -2,6 +2,9 @@
 
 #include "RawlogReplaySensor.h"
 
+#include <dynslam/core/Config.h>
+#include <dynslam/core/Options.h>
+
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/hwdrivers/CGenericSensor.h>
 #include <mrpt/obs/CObservation.h>
@@ -13,6 +16,23 @@
 
 namespace dynslam::runner {
 
+namespace {
+
+/// The [global] section of a sensors ini.
+struct GlobalOptions : core::Options {
+  double merge_hold_s = LiveSensors::kMergeHoldS;
+  int max_queued_observations = LiveSensors::kMaxQueued;
+
+  void describe(core::OptionVisitor& v) override {
+    v.key("merge_hold_s", merge_hold_s, core::Range::closed(0, 10),
+          "s; each observation waits this long for another sensor's earlier one");
+    v.key("max_queued_observations", max_queued_observations, core::Range::closed(1, 1000000),
+          "observations waiting at most; past it the oldest are dropped");
+  }
+};
+
+}  // namespace
+
 LiveSensors::LiveSensors(const std::string& ini_file) {
   if (!std::filesystem::exists(ini_file))
     throw std::runtime_error("--sensors: cannot read '" + ini_file + "'");
@@ -20,20 +40,10 @@ LiveSensors::LiveSensors(const std::string& ini_file) {
   const mrpt::config::CConfigFile ini(ini_file);
   std::vector<std::string> sections;
   ini.getAllSections(sections);
-  std::vector<std::string> global_keys;
-  ini.getAllKeys("global", global_keys);
-  for (const auto& key : global_keys)
-    if (key != "merge_hold_s" && key != "max_queued_observations")
-      throw std::runtime_error("[global] of " + ini_file + ": unknown key '" + key +
-                               "' (known: merge_hold_s, max_queued_observations)");
-  merge_hold_s_ = ini.read_double("global", "merge_hold_s", kMergeHoldS);
-  if (!(merge_hold_s_ >= 0 && merge_hold_s_ <= 10))
-    throw std::runtime_error("[global] merge_hold_s of " + ini_file + ": must be in [0, 10] s");
-  const long max_queued = ini.read_int("global", "max_queued_observations", kMaxQueued);
-  if (max_queued < 1 || max_queued > 1000000)
-    throw std::runtime_error("[global] max_queued_observations of " + ini_file +
-                             ": must be in [1, 1000000]");
-  max_queued_ = static_cast<std::size_t>(max_queued);
+  GlobalOptions global;  // unknown keys and values out of range: errors naming key and file
+  core::loadOptionsStrict(global, core::IniConfig::fromMrpt(ini, ini_file), "global");
+  merge_hold_s_ = global.merge_hold_s;
+  max_queued_ = static_cast<std::size_t>(global.max_queued_observations);
   std::vector<std::string> names;
   for (const auto& section : sections) {
     if (section.empty() || section == "global") continue;

@@ -30,7 +30,7 @@ namespace dynslam::runner {
 class LiveSensors {
  public:
   static constexpr double kMergeHoldS = 0.1;
-  static constexpr long kMaxQueued = 256;  // 1.3 s of a 30 Hz camera and a 160 Hz IMU
+  static constexpr int kMaxQueued = 256;  // 1.3 s of a 30 Hz camera and a 160 Hz IMU
 
   /// Creates, configures and initializes every sensor of `ini_file` and starts its thread.
   /// Throws std::runtime_error naming the file and section: an unknown driver, a bad setting, a
