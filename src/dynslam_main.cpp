@@ -139,8 +139,10 @@ int main(int argc, char** argv) {
     args.map_voxel_size = cl.optionalDouble("--map-voxel").value_or(args.map_voxel_size);
     if (args.map_every_n_frames < 1 || !(args.map_voxel_size > 0))
       throw dynslam::core::UsageError("--map-every must be >= 1 and --map-voxel > 0");
-    const long long max_points = cl.optionalInteger("--map-max-points").value_or(1000000);
-    const long long track_points = cl.optionalInteger("--map-track-points").value_or(20000);
+    const long long max_points = cl.optionalInteger("--map-max-points")
+                                     .value_or(static_cast<long long>(args.map_max_points));
+    const long long track_points = cl.optionalInteger("--map-track-points")
+                                       .value_or(static_cast<long long>(args.map_max_track_points));
     if (max_points < 1 || track_points < 2)
       throw dynslam::core::UsageError("--map-max-points must be >= 1 and --map-track-points >= 2");
     args.map_max_points = static_cast<std::size_t>(max_points);

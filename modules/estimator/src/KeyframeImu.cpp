@@ -19,7 +19,7 @@ void KeyframeImu::addSamples(const std::vector<core::ImuSample>& samples, std::s
       broken_ = true;
       ++gaps_;
     }
-    if (current_ && !broken_ && s.t - current_start_ > max_interval_) {
+    if (!broken_ && overlongAt(s.t)) {
       broken_ = true;
       ++overlong_;
       current_.reset();  // its samples go with it
@@ -33,10 +33,11 @@ void KeyframeImu::addSamples(const std::vector<core::ImuSample>& samples, std::s
 std::shared_ptr<ImuPreintegration> KeyframeImu::cutAt(double t, const Eigen::Vector3d& ba,
                                                       const Eigen::Vector3d& bg) {
   if (!last_) return nullptr;
+  // Samples up to the limit, the keyframe past it: dropped and counted as in addSamples.
+  if (!broken_ && overlongAt(t)) ++overlong_;
   // Samples missing at t: nothing to close the interval with.
-  const bool overlong = t - current_start_ > max_interval_;
   std::shared_ptr<ImuPreintegration> done =
-      broken_ || missingAt(t) || overlong ? nullptr : current_;
+      broken_ || missingAt(t) || overlongAt(t) ? nullptr : current_;
   if (done && t > current_end_) done->push(t - current_end_, last_->acc, last_->gyr);
   broken_ = false;
   current_ = std::make_shared<ImuPreintegration>(last_->acc, last_->gyr, ba, bg, noise_);

@@ -91,3 +91,15 @@ TEST(KeyframeImu, APreintegrationLongerThanTheLimitIsDroppedAndTheNextStartsClea
   ASSERT_TRUE(next) << "the next interval is whole again";
   EXPECT_NEAR(next->sumDt(), 0.3, 1e-9);
 }
+
+TEST(KeyframeImu, AKeyframePastTheLimitDropsAndCountsTheInterval) {
+  KeyframeImu imu(ImuNoise{}, KeyframeImu::kMaxGapS, 2.0);
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  imu.addSamples(samples(0.0, 0.1, 200, 0.5), 0);
+  imu.cutAt(0.1, zero, zero);
+  imu.addSamples(samples(0.105, 2.09, 200, 0.5), 1);  // the last one 1.99 s after the keyframe
+  EXPECT_EQ(imu.overlong(), 0u);
+  EXPECT_TRUE(imu.peekAt(2.09)) << "within the limit, no sample missing";
+  EXPECT_EQ(imu.cutAt(2.12, zero, zero), nullptr) << "2.02 s, 0.03 s past the last sample";
+  EXPECT_EQ(imu.overlong(), 1u);
+}

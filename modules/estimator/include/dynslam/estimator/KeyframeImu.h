@@ -52,6 +52,8 @@ class KeyframeImu {
   /// they resume), and holding the last one over it gave the frames of an IMU gap a prediction
   /// that pulled their poses away.
   bool missingAt(double t) const { return last_ && t - last_->t > max_gap_; }
+  /// The current preintegration, extended to t, would span more than max_interval.
+  bool overlongAt(double t) const { return current_ && t - current_start_ > max_interval_; }
   struct Sample {
     double t;
     Eigen::Vector3d acc, gyr;
