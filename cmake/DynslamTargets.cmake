@@ -17,6 +17,11 @@ function(dynslam_add_module name)
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_link_libraries(dynslam_${name} PUBLIC ${M_DEPS} PRIVATE ${M_PRIVATE_DEPS})
   target_compile_options(dynslam_${name} PRIVATE ${DYNSLAM_WARNINGS})
+  if(DYNSLAM_SANITIZE)
+    # An instrumented static library needs the sanitizer run-time wherever it is linked: the
+    # exported target carries the flag, so a program outside the tree links too.
+    target_link_options(dynslam_${name} INTERFACE -fsanitize=${DYNSLAM_SANITIZE})
+  endif()
   if(NOT M_NO_INSTALL)
     install(TARGETS dynslam_${name} EXPORT dynslamTargets
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
