@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -55,6 +56,7 @@ void checkMapScene(const std::string& sim, const std::string& out) {
   // Every objects/<id>.tum has its polyline object_<id>, through the same positions.
   size_t tracks = 0;
   for (const auto& file : fs::directory_iterator(out + "/objects")) {
+    if (file.path().extension() != ".tum") continue;  // states.csv
     const std::string id = file.path().stem().string();
     const auto poses = dynslam::core::readTum(file.path().string());
     auto lines =
@@ -98,11 +100,12 @@ void checkTimingCsv(const std::string& out) {
   ASSERT_TRUE(std::getline(in, header));
   EXPECT_EQ(header,
             "frame,t_s,Detection_ms,Segmentation_ms,Tracking_ms,Retrack_ms,PredictedBoxes_ms,"
-            "FeatureTracking_ms,FloorRemoval_ms,DynamicClassification_ms,Estimator_ms,pipeline_ms");
+            "FeatureTracking_ms,FloorRemoval_ms,DynamicClassification_ms,Estimator_ms,"
+            "ObjectStates_ms,pipeline_ms");
   size_t rows = 0;
   for (std::string line; std::getline(in, line); ++rows) {
     const auto fields = split(line, ',');
-    ASSERT_EQ(fields.size(), 12u) << line;
+    ASSERT_EQ(fields.size(), 13u) << line;
     EXPECT_EQ(std::stoul(fields[0]), rows) << line;
     const double total = std::stod(fields.back());
     for (size_t i = 2; i + 1 < fields.size(); ++i) {
@@ -112,6 +115,29 @@ void checkTimingCsv(const std::string& out) {
     }
   }
   EXPECT_EQ(rows, kFrames);
+}
+
+// Every object state of every frame; each id has its objects/<id>.tum with a pose per row.
+void checkObjectStatesCsv(const std::string& out) {
+  std::ifstream in(out + "/objects/states.csv");
+  std::string header;
+  ASSERT_TRUE(std::getline(in, header));
+  EXPECT_EQ(header,
+            "t_s,id,track_id,category,measured,moving,x,y,z,vx,vy,vz,width,depth,height,"
+            "sigma_x,sigma_y,sigma_z,sigma_vx,sigma_vy,sigma_vz,up_x,up_y,up_z");
+  std::map<std::string, size_t> rowsById;
+  for (std::string line; std::getline(in, line);) {
+    const auto fields = split(line, ',');
+    ASSERT_EQ(fields.size(), 24u) << line;
+    EXPECT_EQ(fields[3], "person") << line;
+    ++rowsById[fields[1]];
+    const double speed = std::hypot(std::stod(fields[9]), std::stod(fields[10]));
+    EXPECT_LT(speed, 3.0) << "a walker's speed: " << line;
+    EXPECT_GT(std::stod(fields[14]), 0.3) << "a person's height: " << line;
+  }
+  EXPECT_GE(rowsById.size(), 1u);
+  for (const auto& [id, rows] : rowsById)
+    EXPECT_EQ(dynslam::core::readTum(out + "/objects/" + id + ".tum").size(), rows) << id;
 }
 
 void checkKeyframesCsv(const std::string& out) {
@@ -214,6 +240,10 @@ TEST(RunnerOutputs, TheFullSystemOnTwoSimulatedSecondsLeavesEveryOutput) {
   {
     SCOPED_TRACE("keyframes.csv");
     checkKeyframesCsv(out);
+  }
+  {
+    SCOPED_TRACE("objects/states.csv");
+    checkObjectStatesCsv(out);
   }
   {
     SCOPED_TRACE("summary.json's APE");

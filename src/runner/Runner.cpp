@@ -6,6 +6,7 @@
 #include "KeyframeLog.h"
 #include "LiveSensors.h"
 #include "LiveView.h"
+#include "ObjectStateLog.h"
 #include "RunSummary.h"
 #include "TimingLog.h"
 #include "TrajectoryFiles.h"
@@ -184,6 +185,7 @@ class DynslamRun {
     system_->addSink(trajectory_);
     system_->addSink(std::make_shared<TimingLog>(outPath("timing.csv"), system_->pipeline()));
     if (rec_.estimator) system_->addSink(std::make_shared<KeyframeLog>(outPath("keyframes.csv")));
+    system_->addSink(std::make_shared<ObjectStateLog>(outPath("objects/states.csv")));
     if (!args_.frames_dir.empty())
       system_->addSink(std::make_shared<AnnotatedOutput>(args_.frames_dir, args_.frames_video));
     if (args_.gui) {

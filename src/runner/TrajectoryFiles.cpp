@@ -16,6 +16,15 @@ TrajectoryFiles::TrajectoryFiles(const std::string& out)
 
 void TrajectoryFiles::onFrame(const core::Frame& frame, const system::FrameContext&) {
   if (frame.T_world_camera) trajectory_.append({frame.t, *frame.T_world_camera});
+  if (frame.object_states) {
+    // The ObjectStates stage ran: each file follows a state's centre (the world's axes).
+    for (const auto& state : *frame.object_states) {
+      Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+      T.translation() = state.centre;
+      appendObjectPose(state.id, {frame.t, T});
+    }
+    return;
+  }
   for (const auto& object : frame.object_poses)
     appendObjectPose(object.object_id, {frame.t, object.T_world_object});
 }

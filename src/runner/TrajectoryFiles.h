@@ -1,6 +1,7 @@
 #pragma once
 // trajectory.tum (the camera, pose by pose, flushed as it goes: a run that fails part-way keeps
-// every pose before the failure) and objects/<id>.tum (each object the estimator poses).
+// every pose before the failure) and objects/<id>.tum: each object state's centre when the
+// pipeline has the ObjectStates stage (id: the state's), else each object the estimator poses.
 #include <dynslam/io/TrajectoryWriter.h>
 #include <dynslam/system/FrameSink.h>
 

@@ -45,6 +45,25 @@ void SystemState::update(const core::Frame& frame) {
 }
 
 void SystemState::updateObjects(const core::Frame& frame) {
+  if (frame.object_states) {
+    objects_.clear();  // the stage keeps its own states, coasting ones too
+    for (const auto& state : *frame.object_states) {
+      MovingObject& o = objects_[state.id].out;
+      o.id = state.id;
+      o.category = state.category;
+      o.pose = mrpt::math::TPose3D(state.centre.x(), state.centre.y(), state.centre.z(), 0, 0, 0);
+      o.velocity = toTPoint3D(state.velocity);
+      o.extent = {state.extent.x(), state.extent.z(), state.extent.y()};  // width, height, depth
+      mrpt::math::CMatrixDouble66 cov;
+      for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < 6; ++c) cov(r, c) = state.covariance(r, c);
+      o.cov = cov;
+      o.moving = state.moving;
+      o.measured = state.measured;
+      o.last_seen = mrpt::Clock::fromDouble(state.last_measured);
+    }
+    return;
+  }
   for (const auto& posed : frame.object_poses) {
     Object& o = objects_[posed.object_id];
     const bool seenBefore = o.out.id == posed.object_id;

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -126,10 +127,15 @@ TEST_F(SystemTest, SinksSubscriptionsAndGettersSeeEveryFrame) {
   EXPECT_LT(system.latestVelocity()->norm(), 3.0) << "a hand-held camera's speed";
   EXPECT_GE(mapUpdates, 2u) << "one frame in 10 adds to the map";
   EXPECT_GT(mapPoints, 1000u);
+  // params/sim_vio.ini's ObjectStates stage: filtered states with their covariance.
+  EXPECT_FALSE(system.movingObjects().empty()) << "people walk through the 2 s";
   for (const auto& object : system.movingObjects()) {
     EXPECT_EQ(object.category, "person") << object.id;
     EXPECT_LE(object.last_seen, system.latestPose()->timestamp);
     EXPECT_GT(object.extent.y, 0.3) << "a person's height in view";
+    ASSERT_TRUE(object.cov) << object.id;
+    EXPECT_GT((*object.cov)(0, 0), 0.0);
+    EXPECT_LT(std::hypot(object.velocity.x, object.velocity.y), 3.0) << "a walker's speed";
   }
 }
 

@@ -97,8 +97,13 @@ void MapSceneBuilder::appendToTrack(std::vector<Eigen::Vector3f>& track,
 }
 
 void MapSceneBuilder::addFrame(const core::Frame& frame) {
-  for (const auto& o : frame.object_poses)
-    appendToTrack(objects_[o.object_id], o.T_world_object.translation().cast<float>());
+  if (frame.object_states) {
+    for (const auto& s : *frame.object_states)
+      appendToTrack(objects_[s.id], s.centre.cast<float>());
+  } else {
+    for (const auto& o : frame.object_poses)
+      appendToTrack(objects_[o.object_id], o.T_world_object.translation().cast<float>());
+  }
   if (!frame.T_world_camera) return;
   appendToTrack(camera_, frame.T_world_camera->translation().cast<float>());
   if (posed_frames_++ % static_cast<size_t>(options_.every_n_frames) == 0) addStaticPoints(frame);

@@ -3,6 +3,7 @@
 // other sensors said since the previous one. Stages read what earlier stages wrote and add
 // their own output. Kept free of MRPT headers: every stage includes this file.
 #include <dynslam/core/Features.h>
+#include <dynslam/core/ObjectState.h>
 #include <dynslam/core/Perception.h>
 #include <dynslam/core/Trajectory.h>
 
@@ -113,6 +114,9 @@ struct Frame {
   /// World poses of the objects the estimator follows this frame (the runner writes one TUM
   /// trajectory per object id).
   std::vector<ObjectPose> object_poses;
+  /// Set (possibly empty) by the ObjectStates stage: every object it follows, measured or
+  /// predicted this frame. Outputs prefer these to object_poses when set.
+  std::optional<std::vector<ObjectState>> object_states;
   /// Set by the estimator when this frame became a keyframe.
   std::optional<KeyframeRecord> keyframe;
 };

@@ -39,16 +39,27 @@ struct MapUpdate {
   std::shared_ptr<mrpt::maps::CMetricMap> map;  ///< a mrpt::maps::CColouredPointsMap
 };
 
-/// An object the estimator follows (objects/<id>.tum), as a planner reads it.
+/// An object the system follows, as a planner reads it. With the ObjectStates stage in the
+/// pipeline (params/sim_vio.ini has it) these are its filtered states: the body's centre,
+/// velocity and their covariance, kept through short occlusions. Without it, each object the
+/// estimator poses (its rigid set's centroid), with the velocity from its last two poses.
 struct MovingObject {
-  int id = -1;                    ///< the tracker's id: stable while tracked, never reused in a run
-  std::string category;           ///< "person", "car", ... (the ini's Detection.class_map)
-  mrpt::math::TPose3D pose;       ///< the object's frame in the map (its rigid set's centroid)
-  mrpt::math::TPoint3D velocity;  ///< m/s in the map, from its last two poses (0 with one)
-  /// m: width and height of the tracker's box at the object's depth, and that width again as
-  /// its depth (a box sees no thickness).
+  /// Stable while followed, never reused in a run: the state's id (ObjectStates), else the
+  /// tracker's id.
+  int id = -1;
+  std::string category;  ///< "person", "car", ... (the ini's Detection.class_map)
+  /// In the map: the body's centre with the map's axes (ObjectStates), else the object's frame.
+  mrpt::math::TPose3D pose;
+  mrpt::math::TPoint3D velocity;  ///< m/s in the map
+  /// m: width (across the line of sight), height and depth (along it). ObjectStates: the
+  /// state's, its depth assumed from the width; else the tracker's box width and height at the
+  /// object's depth, and that width again as its depth.
   mrpt::math::TPoint3D extent;
-  mrpt::Clock::time_point last_seen;  ///< stamp of the last frame that posed it
+  /// Of (centre, velocity) in the map's axes, m and m/s (ObjectStates only).
+  std::optional<mrpt::math::CMatrixDouble66> cov;
+  bool moving = false;    ///< faster than [ObjectStates] moving_speed (ObjectStates only)
+  bool measured = false;  ///< seen in the last frame, else predicted (ObjectStates only)
+  mrpt::Clock::time_point last_seen;  ///< stamp of the last frame that measured or posed it
 };
 
 enum class TrackingStatus {
