@@ -59,7 +59,7 @@ void DetectionStage::process(core::Frame& frame) {
     frame.detections = detector_->detect(frame);
     frame.detections_fresh = true;
     ++fresh_frames_;
-    source_frames_.push_back(frame.index);
+    recordSource(frame.index);
     return;
   }
   // Take what finished first, then leave this frame for the detector: it is the newest image,
@@ -68,10 +68,18 @@ void DetectionStage::process(core::Frame& frame) {
     frame.detections = std::move(result->detections);
     frame.detections_fresh = true;
     ++fresh_frames_;
-    source_frames_.push_back(result->frame_index);
+    recordSource(result->frame_index);
     realtime_detector_seconds_ += result->seconds;
   }
   realtime_->submit(frame);
+}
+
+void DetectionStage::recordSource(std::size_t frame_index) {
+  // Bounded over a long run: the oldest half goes once twice the kept number is reached.
+  if (source_frames_.size() >= 2 * kSourceFramesKept)
+    source_frames_.erase(source_frames_.begin(),
+                         source_frames_.begin() + std::ptrdiff_t(kSourceFramesKept));
+  source_frames_.push_back(frame_index);
 }
 
 void DetectionStage::finish() {

@@ -106,6 +106,23 @@ TEST(DetectionStage, DeterministicModeDetectsEveryFrameInline) {
   EXPECT_EQ(stage.freshFrames(), 10u);
 }
 
+TEST(DetectionStage, ALongRunKeepsABoundedRecordOfSourceFrames) {
+  const std::size_t frames = 2 * det::DetectionStage::kSourceFramesKept + 500;
+  det::DetectionStage stage;
+  stage.configure(IniConfig::fromText("[Detection]\ndetector = ground_truth\nobjects = " +
+                                      writeObjects(int(frames)) + "\n"),
+                  "Detection");
+  for (std::size_t f = 0; f < frames; ++f) {
+    auto frame = frameAt(int(f));
+    stage.process(frame);
+  }
+  EXPECT_EQ(stage.freshFrames(), frames);
+  const auto& sources = stage.sourceFrames();
+  EXPECT_LE(sources.size(), 2 * det::DetectionStage::kSourceFramesKept);
+  EXPECT_GE(sources.size(), det::DetectionStage::kSourceFramesKept);
+  EXPECT_EQ(sources.back(), frames - 1) << "the newest are kept";
+}
+
 TEST(DetectionStage, RealtimeModeDeliversEarlierFramesResultsInOrder) {
   det::DetectionStage stage;
   const int frames = 3000;

@@ -288,7 +288,11 @@ TEST_F(AugmenterTest, RendersFramesInStreamOrderQuickly) {
       augmenter.frameCount();
   std::cout << "renderFrame in order: " << ms << " ms per frame (read, render, composite, noise, "
             << "truth)\n";
+  // A loose bound against a frame re-reading its sequence from the start (its figure is
+  // bench-sim-render's); a sanitizer build runs several times slower, and is not held to it.
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
   EXPECT_LT(ms, 200);
+#endif
 }
 
 TEST(AugmenterErrors, MissingFilesAreNamed) {

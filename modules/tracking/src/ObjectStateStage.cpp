@@ -60,6 +60,7 @@ void ObjectStateStage::process(core::Frame& frame) {
   if (last_t_ && frame.t > *last_t_)
     for (auto& s : followed_) {
       const bool maneuvering = options_.maneuver_nis > 0 && s.nis > options_.maneuver_nis;
+      ++predictions_;
       maneuvering_ += maneuvering;
       s.filter.predict(frame.t - *last_t_, maneuvering ? options_.maneuver_acceleration_sigma
                                                        : options_.acceleration_sigma);
@@ -86,7 +87,7 @@ void ObjectStateStage::process(core::Frame& frame) {
 }
 
 std::vector<ObjectStateStage::Measurement> ObjectStateStage::measure(
-    const core::Frame& frame, const Eigen::Vector3d& up_world) {
+    const core::Frame& frame, const Eigen::Vector3d& up_world) const {
   const Eigen::Isometry3d& T = *frame.T_world_camera;
   const Eigen::Vector3d up_camera = T.linear().transpose() * up_world;
   std::map<int, Measurement> by_track;  // a track segmented twice keeps its larger mask
@@ -218,7 +219,7 @@ std::vector<std::pair<std::string, double>> ObjectStateStage::statistics() const
       {"reassociated", double(reassociated_)},
       {"gated", double(gated_)},
       {"expired", double(expired_)},
-      {"maneuvering_fraction", measurements_ ? double(maneuvering_) / double(measurements_) : 0.0}};
+      {"maneuvering_fraction", predictions_ ? double(maneuvering_) / double(predictions_) : 0.0}};
 }
 
 }  // namespace dynslam::tracking

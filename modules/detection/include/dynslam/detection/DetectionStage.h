@@ -36,12 +36,15 @@ class DetectionStage : public core::Stage {
   std::size_t frames() const { return frames_; }
   std::size_t freshFrames() const { return fresh_frames_; }  ///< frames given a result
   /// In real-time mode: the frame index of the image each fresh frame's detections came from,
-  /// in delivery order (deterministic mode: the frame itself).
+  /// in delivery order (deterministic mode: the frame itself); of a long run, the newest
+  /// kSourceFramesKept to twice that many.
   const std::vector<std::size_t>& sourceFrames() const { return source_frames_; }
+  static constexpr std::size_t kSourceFramesKept = 10000;
 
  private:
   std::unique_ptr<Detector> makeDetector(const core::IniConfig& cfg,
                                          const std::string& section) const;
+  void recordSource(std::size_t frame_index);
 
   DetectionOptions options_;
   std::unique_ptr<Detector> detector_;          // deterministic mode

@@ -27,6 +27,9 @@ struct GnssAlignmentParams {
   /// main direction) the SE(3) fit needs.
   double min_width_m = 2.0;
   int min_pairs = 10;
+  /// Pairs kept while the path does not allow a fit (a robot standing still for hours): at this
+  /// many, every second one is dropped, the first and the newest kept (the span stays whole).
+  int max_pairs = 10000;
 };
 
 class GnssWorldAlignment {

@@ -72,7 +72,7 @@ class ObjectStateStage : public core::Stage {
     int points = 0;
   };
 
-  std::vector<Measurement> measure(const core::Frame& frame, const Eigen::Vector3d& up_world);
+  std::vector<Measurement> measure(const core::Frame& frame, const Eigen::Vector3d& up_world) const;
   void associate(std::vector<Measurement>& measurements, double t);
   void update(Followed& state, const Measurement& m, double t);
   double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
@@ -86,7 +86,7 @@ class ObjectStateStage : public core::Stage {
   Eigen::Vector3d up_ = Eigen::Vector3d::UnitZ();
   int next_id_ = 0;
   std::size_t frames_ = 0, measurements_ = 0, reassociated_ = 0, gated_ = 0, expired_ = 0,
-              maneuvering_ = 0;
+              predictions_ = 0, maneuvering_ = 0;  // state predictions, with manoeuvre noise
 };
 
 }  // namespace dynslam::tracking
