@@ -2,6 +2,7 @@
 
 #include <dynslam/core/HungarianAssignment.h>
 #include <dynslam/core/Median.h>
+#include <dynslam/viz/IdColours.h>
 
 #include <Eigen/Core>
 #include <opencv2/imgcodecs.hpp>
@@ -14,18 +15,6 @@
 
 namespace dynslam::bench {
 namespace {
-
-/// The pose of `trajectory` stamped nearest `t` within `tolerance`, or nullptr.
-const core::StampedPose* poseAt(const core::Trajectory& trajectory, double t, double tolerance) {
-  auto it = std::lower_bound(trajectory.begin(), trajectory.end(), t,
-                             [](const core::StampedPose& p, double s) { return p.t < s; });
-  const core::StampedPose* best = nullptr;
-  for (auto c : {it, it == trajectory.begin() ? it : std::prev(it)})
-    if (c != trajectory.end() && std::abs(c->t - t) <= tolerance &&
-        (!best || std::abs(c->t - t) < std::abs(best->t - t)))
-      best = &*c;
-  return best;
-}
 
 Eigen::Vector3d horizontal(const Eigen::Vector3d& v, const Eigen::Vector3d& up) {
   return v - v.dot(up) * up;
@@ -109,7 +98,7 @@ ObjectScore scoreObjectStates(const std::vector<core::ObjectGroundTruthRow>& tru
     const auto& bodies = index.atTime(camera.t, options.stamp_tolerance);
     if (bodies.empty()) continue;
     const core::StampedPose* estimated =
-        poseAt(estimated_camera, camera.t, options.stamp_tolerance);
+        core::poseNear(estimated_camera, camera.t, options.stamp_tolerance);
     auto found = states.lower_bound(camera.t - options.stamp_tolerance);
     const auto& here = estimated && found != states.end() &&
                                std::abs(found->first - camera.t) <= options.stamp_tolerance
@@ -201,8 +190,8 @@ void writeTopView(const std::string& path, const std::vector<core::ObjectGroundT
     if (r.category == "person" && r.moving)
       people[r.id].push_back(r.T_world_object.translation().head<2>());
   for (const auto& [t, here] : states) {
-    const auto* truePose = poseAt(true_camera, t, options.stamp_tolerance);
-    const auto* estPose = poseAt(estimated_camera, t, options.stamp_tolerance);
+    const auto* truePose = core::poseNear(true_camera, t, options.stamp_tolerance);
+    const auto* estPose = core::poseNear(estimated_camera, t, options.stamp_tolerance);
     if (!truePose || !estPose) continue;
     const Eigen::Isometry3d toTrue = truePose->T_world_body * estPose->T_world_body.inverse();
     for (const auto& s : here) dots.push_back({(toTrue * s.centre).head<2>(), s.id, s.measured});
@@ -228,11 +217,8 @@ void writeTopView(const std::string& path, const std::vector<core::ObjectGroundT
       cv::line(image, pixel(path[k - 1]), pixel(path[k]), cv::Scalar(170, 170, 170), 5,
                cv::LINE_AA);
   for (const auto& d : dots) {
-    const int h = (d.id * 47) % 180;  // a hue per state id
-    cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(h, 220, 200)), bgr;
-    cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
-    const cv::Vec3b c = bgr.at<cv::Vec3b>(0, 0);
-    cv::circle(image, pixel(d.p), 2, cv::Scalar(c[0], c[1], c[2]), d.measured ? cv::FILLED : 1,
+    // State ids start at 0, which colourForId keeps black for the static scene.
+    cv::circle(image, pixel(d.p), 2, viz::colourForId(d.id + 1), d.measured ? cv::FILLED : 1,
                cv::LINE_AA);
   }
   for (std::size_t k = 1; k < camera.size(); ++k)

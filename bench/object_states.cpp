@@ -7,13 +7,14 @@
 // Usage and flags: kUsage below (bench-objects --help).
 #include "object_scoring.h"
 
+#include <dynslam/core/AtomicFile.h>
 #include <dynslam/core/CommandLine.h>
 #include <dynslam/core/JsonWriter.h>
 #include <dynslam/core/Median.h>
 #include <dynslam/core/TrajectoryFile.h>
 
+#include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 namespace {
@@ -38,39 +39,52 @@ id switches, the share of in-view frames with a state, and the longest time a pe
 went without one (median and worst over persons, s).
 )";
 
+/// What is printed and written of a score, computed once.
+struct Figures {
+  double with_state_percent, position_median, position_p90, velocity_median, velocity_p90,
+      gap_median, gap_max;
+};
+
+Figures figuresOf(const bench::ObjectScore& s) {
+  return {s.scored ? 100.0 * s.paired / s.scored : 0.0,
+          core::upperMedian(s.position_errors),
+          core::upperPercentile(s.position_errors, 0.9),
+          core::upperMedian(s.velocity_errors),
+          core::upperPercentile(s.velocity_errors, 0.9),
+          core::upperMedian(s.longest_gaps),
+          s.longest_gaps.empty() ? 0.0
+                                 : *std::max_element(s.longest_gaps.begin(), s.longest_gaps.end())};
+}
+
 void print(const char* what, const bench::ObjectScore& s) {
+  const Figures f = figuresOf(s);
   std::printf(
       "%s: %d persons, %d frames in view, with a state %.1f %%; position error median %.3f p90 "
       "%.3f m; velocity error median %.3f p90 %.3f m/s; id switches %d; longest without a "
       "state median %.2f worst %.2f s\n",
-      what, s.persons, s.scored, s.scored ? 100.0 * s.paired / s.scored : 0.0,
-      core::upperMedian(s.position_errors), core::upperPercentile(s.position_errors, 0.9),
-      core::upperMedian(s.velocity_errors), core::upperPercentile(s.velocity_errors, 0.9),
-      s.id_switches, core::upperMedian(s.longest_gaps),
-      s.longest_gaps.empty() ? 0.0
-                             : *std::max_element(s.longest_gaps.begin(), s.longest_gaps.end()));
+      what, s.persons, s.scored, f.with_state_percent, f.position_median, f.position_p90,
+      f.velocity_median, f.velocity_p90, s.id_switches, f.gap_median, f.gap_max);
 }
 
+/// Written whole or not at all, as every JSON the programs write.
 void writeJson(const std::string& path, const bench::ObjectScore& s) {
-  std::ofstream out(path);
-  core::JsonWriter j(out);
+  const Figures f = figuresOf(s);
+  core::AtomicTextFile file(path);
+  core::JsonWriter j(file.stream());
   j.beginObject()
       .member("persons", s.persons)
       .member("frames_in_view", s.scored)
       .member("frames_with_state", s.paired)
-      .member("position_error_median_m", core::upperMedian(s.position_errors))
-      .member("position_error_p90_m", core::upperPercentile(s.position_errors, 0.9))
-      .member("velocity_error_median_mps", core::upperMedian(s.velocity_errors))
-      .member("velocity_error_p90_mps", core::upperPercentile(s.velocity_errors, 0.9))
+      .member("position_error_median_m", f.position_median)
+      .member("position_error_p90_m", f.position_p90)
+      .member("velocity_error_median_mps", f.velocity_median)
+      .member("velocity_error_p90_mps", f.velocity_p90)
       .member("id_switches", s.id_switches)
-      .member("longest_without_state_median_s", core::upperMedian(s.longest_gaps))
-      .member("longest_without_state_max_s",
-              s.longest_gaps.empty()
-                  ? 0.0
-                  : *std::max_element(s.longest_gaps.begin(), s.longest_gaps.end()))
+      .member("longest_without_state_median_s", f.gap_median)
+      .member("longest_without_state_max_s", f.gap_max)
       .endObject();
-  out << "\n";
-  if (!out) throw std::runtime_error("cannot write '" + path + "'");
+  file.stream() << "\n";
+  file.commit();
 }
 
 }  // namespace

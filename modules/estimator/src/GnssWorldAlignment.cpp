@@ -1,5 +1,7 @@
 #include "dynslam/estimator/GnssWorldAlignment.h"
 
+#include <dynslam/core/Thinning.h>
+
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -24,13 +26,10 @@ Eigen::Matrix3Xd centred(const std::vector<Eigen::Vector3d>& points, const Eigen
 
 void GnssWorldAlignment::addPair(const Eigen::Vector3d& world_antenna, const Eigen::Vector3d& enu) {
   if (aligned_) return;
-  if (int(world_.size()) >= std::max(2, params_.max_pairs))
-    for (auto* pairs : {&world_, &enu_}) {
-      std::size_t kept = 0;
-      for (std::size_t i = 0; i + 1 < pairs->size(); i += 2) (*pairs)[kept++] = (*pairs)[i];
-      (*pairs)[kept++] = pairs->back();
-      pairs->resize(kept);
-    }
+  if (int(world_.size()) >= std::max(2, params_.max_pairs)) {
+    core::keepEverySecond(world_);
+    core::keepEverySecond(enu_);
+  }
   world_.push_back(world_antenna);
   enu_.push_back(enu);
 }

@@ -48,8 +48,7 @@ TEST(GnssWorldAlignment, WithGravityAStraightDriveAlignsOnceItSpansEnough) {
   auto straight = [](int i) { return Eigen::Vector3d(0.8 * i, 0.3 * i, 0.01 * i); };
   feed(a, 12, straight, rng);  // 9.6 m long: spans 4.8 m either side of its centre
   EXPECT_FALSE(a.tryAlign(gravityWorld));
-  feed(
-      a, 20, [&](int i) { return straight(12 + i); }, rng);
+  feed(a, 20, [&](int i) { return straight(12 + i); }, rng);
   ASSERT_TRUE(a.tryAlign(gravityWorld));
   EXPECT_EQ(a.pairs(), 32u);
   EXPECT_LT(angleDeg(a.T_world_enu().linear(), T.linear()), 0.2);
@@ -61,11 +60,9 @@ TEST(GnssWorldAlignment, WithoutGravityALineIsNotEnoughButATurnIs) {
   std::mt19937 rng(4);
   const Eigen::Isometry3d T = trueWorldFromEnu();
   GnssWorldAlignment a;
-  feed(
-      a, 40, [](int i) { return Eigen::Vector3d(0.5 * i, 0, 0); }, rng);
+  feed(a, 40, [](int i) { return Eigen::Vector3d(0.5 * i, 0, 0); }, rng);
   EXPECT_FALSE(a.tryAlign(std::nullopt)) << "rotation about the line is unobservable";
-  feed(
-      a, 40, [](int i) { return Eigen::Vector3d(20.0, 0.5 * i, 0); }, rng);
+  feed(a, 40, [](int i) { return Eigen::Vector3d(20.0, 0.5 * i, 0); }, rng);
   ASSERT_TRUE(a.tryAlign(std::nullopt));
   EXPECT_LT(angleDeg(a.T_world_enu().linear(), T.linear()), 0.2);
   EXPECT_LT((a.T_world_enu().translation() - T.translation()).norm(), 0.05);
@@ -78,13 +75,11 @@ TEST(GnssWorldAlignment, PairsWaitingForAFitStayBoundedAndStillSpanThePath) {
   params.max_pairs = 50;
   GnssWorldAlignment a(params);
   // A line (no fit without gravity), far more fixes than kept.
-  feed(
-      a, 1000, [](int i) { return Eigen::Vector3d(0.05 * i, 0, 0); }, rng);
+  feed(a, 1000, [](int i) { return Eigen::Vector3d(0.05 * i, 0, 0); }, rng);
   EXPECT_FALSE(a.tryAlign(std::nullopt));
   EXPECT_LE(a.pairs(), 50u);
   EXPECT_GE(a.pairs(), 25u);
-  feed(
-      a, 40, [](int i) { return Eigen::Vector3d(50.0, 0.5 * i, 0); }, rng);
+  feed(a, 40, [](int i) { return Eigen::Vector3d(50.0, 0.5 * i, 0); }, rng);
   ASSERT_TRUE(a.tryAlign(std::nullopt)) << "the thinned line and the turn still fit";
   EXPECT_LT(angleDeg(a.T_world_enu().linear(), T.linear()), 0.2);
   EXPECT_LT((a.T_world_enu().translation() - T.translation()).norm(), 0.05);
@@ -109,6 +104,7 @@ TEST(GnssFixBuffer, InterpolatesBetweenBracketingFixesAndWaitsForTheNext) {
   b.dropBefore(1.5);
   EXPECT_EQ(b.size(), 2u) << "keeps the fix before 1.5 for interpolating after it";
 }
+
 
 // A drive of 20 m east then north at 5 m/s with fixes at 10 Hz and keyframes at 3 Hz, the world
 // rotated and shifted from ENU: before the alignment no targets, after it each keyframe's target

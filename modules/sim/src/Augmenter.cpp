@@ -30,18 +30,6 @@ std::string groundTruthPath(const AugmentOptions& a) {
   return (rawlog.parent_path() / (rawlog.stem().string() + ".gt.tum")).string();
 }
 
-/// Index of the ground-truth pose stamped within kStampTolerance of t, or -1.
-long poseAt(const core::Trajectory& gt, double t) {
-  const auto it = std::lower_bound(gt.begin(), gt.end(), t,
-                                   [](const core::StampedPose& p, double s) { return p.t < s; });
-  long best = -1;
-  double best_gap = kStampTolerance;
-  for (auto c : {it, it == gt.begin() ? it : it - 1})
-    if (c != gt.end() && std::abs(c->t - t) <= best_gap)
-      best = c - gt.begin(), best_gap = std::abs(c->t - t);
-  return best;
-}
-
 }  // namespace
 
 Augmenter::~Augmenter() = default;
@@ -89,15 +77,15 @@ void Augmenter::readRealFrames() {
 
   const std::vector<double> stamps = RealRgbdStream::rgbdStamps(rawlog_path_);
   for (std::size_t n = 0; n < stamps.size(); ++n) {
-    const long pose = poseAt(gt, stamps[n]);
-    if (pose < 0) {
+    const core::StampedPose* pose = core::poseNear(gt, stamps[n], kStampTolerance);
+    if (!pose) {
       ++summary_.frames_without_pose;
       continue;
     }
     if (!frames_.empty() && stamps[n] <= frames_.back().stamp)
       throw std::runtime_error("rawlog '" + rawlog_path_ + "': RGB-D stamps do not increase at " +
                                "observation " + std::to_string(n));
-    frames_.push_back({n, stamps[n], gt[static_cast<std::size_t>(pose)].T_world_body});
+    frames_.push_back({n, stamps[n], pose->T_world_body});
   }
   if (frames_.size() < 2)
     throw std::runtime_error("rawlog '" + rawlog_path_ + "' has " + std::to_string(frames_.size()) +

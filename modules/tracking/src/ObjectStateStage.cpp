@@ -109,10 +109,8 @@ std::vector<ObjectStateStage::Measurement> ObjectStateStage::measure(
   return out;
 }
 
-double ObjectStateStage::horizontalDistance(const Eigen::Vector3d& a,
-                                            const Eigen::Vector3d& b) const {
-  const Eigen::Vector3d d = a - b;
-  return (d - d.dot(up_) * up_).norm();
+Eigen::Vector3d ObjectStateStage::horizontal(const Eigen::Vector3d& v) const {
+  return v - v.dot(up_) * up_;
 }
 
 void ObjectStateStage::associate(std::vector<Measurement>& measurements, double t) {
@@ -122,9 +120,8 @@ void ObjectStateStage::associate(std::vector<Measurement>& measurements, double 
   for (auto& s : followed_) {
     for (std::size_t i = 0; i < measurements.size(); ++i) {
       if (used[i] || measurements[i].track_id != s.track_id) continue;
-      if (options_.gate_chi2 > 0 &&
-          s.filter.mahalanobis2(measurements[i].centre, measurements[i].covariance) >
-              options_.gate_chi2) {
+      const double nis = s.filter.mahalanobis2(measurements[i].centre, measurements[i].covariance);
+      if (options_.gate_chi2 > 0 && nis > options_.gate_chi2) {
         if (++s.outliers < options_.gate_frames) {
           used[i] = true;  // skipped: neither this state's nor a new one's
           break;
@@ -134,32 +131,31 @@ void ObjectStateStage::associate(std::vector<Measurement>& measurements, double 
         ++gated_;
         break;
       }
-      update(s, measurements[i], t);
+      update(s, measurements[i], nis, t);
       used[i] = true;
     }
   }
   // 2. A track no state has followed yet continues the nearest unmeasured state of its category
   // (the tracker lost the body and made a new track on it), else starts one. Greedy by distance,
   // nearest pair first.
-  std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
+  std::vector<std::tuple<double, std::size_t, std::size_t, double>> pairs;  // d, i, k, NIS
   for (std::size_t i = 0; i < measurements.size(); ++i) {
     if (used[i] || followed_tracks_.count(measurements[i].track_id)) continue;
     for (std::size_t k = 0; k < followed_.size(); ++k) {
       const Followed& s = followed_[k];
       if (s.measured || s.category != measurements[i].category) continue;
-      const double d = horizontalDistance(s.filter.position(), measurements[i].centre);
-      const bool inGate = options_.gate_chi2 <= 0 ||
-                          s.filter.mahalanobis2(measurements[i].centre,
-                                                measurements[i].covariance) <= options_.gate_chi2;
-      if (d <= options_.reassociation_distance_m && inGate) pairs.emplace_back(d, i, k);
+      const double d = horizontal(s.filter.position() - measurements[i].centre).norm();
+      const double nis = s.filter.mahalanobis2(measurements[i].centre, measurements[i].covariance);
+      const bool inGate = options_.gate_chi2 <= 0 || nis <= options_.gate_chi2;
+      if (d <= options_.reassociation_distance_m && inGate) pairs.emplace_back(d, i, k, nis);
     }
   }
   std::sort(pairs.begin(), pairs.end());
-  for (const auto& [d, i, k] : pairs) {
+  for (const auto& [d, i, k, nis] : pairs) {
     if (used[i] || followed_[k].measured) continue;
     followed_[k].track_id = measurements[i].track_id;
     followed_tracks_.insert(measurements[i].track_id);
-    update(followed_[k], measurements[i], t);
+    update(followed_[k], measurements[i], nis, t);
     used[i] = true;
     ++reassociated_;
   }
@@ -174,9 +170,8 @@ void ObjectStateStage::associate(std::vector<Measurement>& measurements, double 
   }
 }
 
-void ObjectStateStage::update(Followed& state, const Measurement& m, double t) {
-  // Fading memory of about five frames.
-  state.nis = 0.8 * state.nis + 0.2 * state.filter.mahalanobis2(m.centre, m.covariance);
+void ObjectStateStage::update(Followed& state, const Measurement& m, double nis, double t) {
+  state.nis = 0.8 * state.nis + 0.2 * nis;  // fading memory of about five frames
   state.filter.update(m.centre, m.covariance);
   const double w = options_.extent_smoothing;
   state.extent = (1 - w) * state.extent + w * m.extent;
@@ -199,7 +194,7 @@ std::vector<core::ObjectState> ObjectStateStage::states() const {
     o.up = up_;
     o.last_measured = s.last_measured;
     o.measured = s.measured;
-    o.moving = (o.velocity - o.velocity.dot(up_) * up_).norm() > options_.moving_speed;
+    o.moving = horizontal(o.velocity).norm() > options_.moving_speed;
     out.push_back(std::move(o));
   }
   return out;

@@ -3,6 +3,7 @@
 #include "dynslam/viz/IdColours.h"
 
 #include <dynslam/core/AtomicFile.h>
+#include <dynslam/core/Thinning.h>
 
 #include <mrpt/maps/CColouredPointsMap.h>
 #include <mrpt/opengl/COpenGLScene.h>
@@ -89,10 +90,7 @@ void MapSceneBuilder::appendToTrack(std::vector<Eigen::Vector3f>& track,
   track.push_back(point);
   if (track.size() <= options_.max_track_points) return;
   // Every second point, the first and the newest kept: the line's extent stays whole.
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i + 1 < track.size(); i += 2) track[kept++] = track[i];
-  track[kept++] = track.back();
-  track.resize(kept);
+  core::keepEverySecond(track);
   track.shrink_to_fit();
 }
 

@@ -74,8 +74,9 @@ class ObjectStateStage : public core::Stage {
 
   std::vector<Measurement> measure(const core::Frame& frame, const Eigen::Vector3d& up_world) const;
   void associate(std::vector<Measurement>& measurements, double t);
-  void update(Followed& state, const Measurement& m, double t);
-  double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  /// `nis`: the measurement's squared Mahalanobis distance from the state before the update.
+  void update(Followed& state, const Measurement& m, double nis, double t);
+  Eigen::Vector3d horizontal(const Eigen::Vector3d& v) const;  ///< v without its part along up
   std::vector<core::ObjectState> states() const;
 
   ObjectStateOptions options_;
