@@ -7,6 +7,7 @@
 #include <dynslam/core/Stage.h>
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/io/SensorSync.h>
+#include <dynslam/nav/NavigationOptions.h>
 #include <dynslam/sim/ScenarioOptions.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -241,6 +242,10 @@ std::vector<SectionDoc> collectParameters() {
       out.push_back(
           {section, "dynslam-sim", "the scenario (sim::ScenarioOptions)", "", std::move(keys)});
   }
+  out.push_back({nav::NavigationOptions::kSection, "navigation",
+                 "the navigation adapter (nav::NavigationAdapter)",
+                 "The robot's navigation frame is its base at the SLAM system's first pose.",
+                 keysOf(nav::NavigationOptions())});
   return out;
 }
 
@@ -267,8 +272,10 @@ std::string toMarkdown(const std::vector<SectionDoc>& sections) {
   for (const auto& s : sections) {
     if (s.program != program) {
       program = s.program;
-      md << (program == "dynslam" ? "- `dynslam` (`--config FILE.ini`)\n"
-                                  : "- `dynslam-sim` scenario files (`params/sim/*.ini`)\n");
+      md << (program == "dynslam"       ? "- `dynslam` (`--config FILE.ini`)\n"
+             : program == "dynslam-sim" ? "- `dynslam-sim` scenario files (`params/sim/*.ini`)\n"
+                                        : "- the navigation adapter (`bench-nav-adapter "
+                                          "--nav-config FILE.ini`, `nav::NavigationOptions`)\n");
     }
     md << "  - [`[" << s.section << "]`](#" << anchor(s) << ") " << s.owner << ", " << s.keys.size()
        << " keys\n";

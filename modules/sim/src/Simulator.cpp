@@ -5,6 +5,8 @@
 #include "dynslam/sim/SensorNoise.h"
 #include "dynslam/sim/TrajectoryPaths.h"
 
+#include <dynslam/core/CameraMount.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -82,17 +84,8 @@ SplineTrajectory cameraPath(const ScenarioOptions& o, const Scene& scene) {
 }  // namespace
 
 Eigen::Isometry3d cameraInBody(const CameraMotionOptions& c) {
-  Eigen::Matrix3d axes;
-  axes << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  const double d = M_PI / 180;
-  const Eigen::Matrix3d mount = (Eigen::AngleAxisd(c.cam_yaw_deg * d, Eigen::Vector3d::UnitZ()) *
-                                 Eigen::AngleAxisd(c.cam_pitch_deg * d, Eigen::Vector3d::UnitY()) *
-                                 Eigen::AngleAxisd(c.cam_roll_deg * d, Eigen::Vector3d::UnitX()))
-                                    .toRotationMatrix();
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = mount * axes;
-  T.translation() = Eigen::Vector3d(c.cam_x, c.cam_y, c.cam_z);
-  return T;
+  return core::opticalFrameOnBody(Eigen::Vector3d(c.cam_x, c.cam_y, c.cam_z), c.cam_yaw_deg,
+                                  c.cam_pitch_deg, c.cam_roll_deg);
 }
 
 core::CameraIntrinsics intrinsicsOf(const WorldOptions& w) {
