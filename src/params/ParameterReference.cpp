@@ -8,6 +8,7 @@
 #include <dynslam/core/StageRegistry.h>
 #include <dynslam/io/SensorSync.h>
 #include <dynslam/nav/NavigationOptions.h>
+#include "nav_demo/NavDemoOptions.h"
 #include <dynslam/sim/ScenarioOptions.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -242,8 +243,14 @@ std::vector<SectionDoc> collectParameters() {
       out.push_back(
           {section, "dynslam-sim", "the scenario (sim::ScenarioOptions)", "", std::move(keys)});
   }
-  out.push_back({nav::NavigationOptions::kSection, "navigation",
-                 "the navigation adapter (nav::NavigationAdapter)",
+  out.push_back({navdemo::NavDemoOptions::kSection, "dynslam-nav-demo",
+                 "dynslam-nav-demo (navdemo::NavDemoOptions)", "", keysOf(navdemo::NavDemoOptions())});
+  out.push_back({navdemo::RobotOptions::kSection, "dynslam-nav-demo",
+                 "dynslam-nav-demo's simulated robot (navdemo::RobotOptions)", "",
+                 keysOf(navdemo::RobotOptions())});
+  out.push_back({nav::NavigationOptions::kSection, "dynslam-nav-demo",
+                 "the navigation adapter (nav::NavigationAdapter; also `bench-nav-adapter "
+                 "--nav-config`)",
                  "The robot's navigation frame is its base at the SLAM system's first pose.",
                  keysOf(nav::NavigationOptions())});
   return out;
@@ -274,8 +281,8 @@ std::string toMarkdown(const std::vector<SectionDoc>& sections) {
       program = s.program;
       md << (program == "dynslam"       ? "- `dynslam` (`--config FILE.ini`)\n"
              : program == "dynslam-sim" ? "- `dynslam-sim` scenario files (`params/sim/*.ini`)\n"
-                                        : "- the navigation adapter (`bench-nav-adapter "
-                                          "--nav-config FILE.ini`, `nav::NavigationOptions`)\n");
+                                        : "- `dynslam-nav-demo` navigation scenarios "
+                                          "(`params/nav/*.ini`)\n");
     }
     md << "  - [`[" << s.section << "]`](#" << anchor(s) << ") " << s.owner << ", " << s.keys.size()
        << " keys\n";

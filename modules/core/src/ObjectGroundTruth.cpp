@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <ostream>
 #include <sstream>
 
@@ -143,10 +144,31 @@ std::vector<ObjectGroundTruthRow> readObjectGroundTruth(const std::string& path)
 const std::vector<ObjectGroundTruthRow> ObjectGroundTruthIndex::kNone;
 
 ObjectGroundTruthIndex::ObjectGroundTruthIndex(std::vector<ObjectGroundTruthRow> rows) {
-  for (auto& row : rows) {
-    frame_by_time_.emplace(row.t, row.frame);
-    by_frame_[row.frame].push_back(std::move(row));
-  }
+  for (auto& row : rows) add(std::move(row));
+}
+
+void ObjectGroundTruthIndex::add(ObjectGroundTruthRow row) {
+  frame_by_time_.emplace(row.t, row.frame);
+  by_frame_[row.frame].push_back(std::move(row));
+}
+
+std::shared_ptr<ObjectGroundTruthFeed> ObjectGroundTruthFeed::named(const std::string& name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<ObjectGroundTruthFeed>> feeds;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& feed = feeds[name];
+  if (!feed) feed = std::make_shared<ObjectGroundTruthFeed>();
+  return feed;
+}
+
+void ObjectGroundTruthFeed::add(const std::vector<ObjectGroundTruthRow>& rows) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& row : rows) index_.add(row);
+}
+
+std::vector<ObjectGroundTruthRow> ObjectGroundTruthFeed::atTime(double t, double tolerance) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return index_.atTime(t, tolerance);
 }
 
 const std::vector<ObjectGroundTruthRow>& ObjectGroundTruthIndex::byFrame(std::size_t frame) const {

@@ -34,7 +34,8 @@ void describeHog(core::OptionVisitor& v, HogPeopleDetectorSettings& o) {
 
 void describeGroundTruth(core::OptionVisitor& v, GroundTruthDetectorSettings& o) {
   v.path("objects", o.objects,
-         "dynslam-sim objects.txt (relative: from the working directory, else the ini's folder)");
+         "dynslam-sim objects.txt (relative: from the working directory, else the ini's folder); "
+         "feed:NAME reads what a program adds while the run goes on (dynslam-nav-demo)");
   v.key("miss_rate", o.miss_rate, Range::closed(0, 1), "probability a visible object is missed");
   v.key("jitter_px", o.jitter_px, Range::atLeast(0), "Gaussian sigma per box edge, px");
   v.key("false_positive_rate", o.false_positive_rate, Range::atLeast(0),

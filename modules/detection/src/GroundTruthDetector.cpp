@@ -42,6 +42,11 @@ cv::Rect2f randomBox(const std::string& category, std::mt19937& rng, cv::Size im
 
 GroundTruthDetector::GroundTruthDetector(GroundTruthDetectorSettings settings, ClassMap class_map)
     : settings_(std::move(settings)), class_map_(std::move(class_map)) {
+  const std::string prefix = core::ObjectGroundTruthFeed::kPrefix;
+  if (settings_.objects.rfind(prefix, 0) == 0) {
+    feed_ = core::ObjectGroundTruthFeed::named(settings_.objects.substr(prefix.size()));
+    return;
+  }
   auto rows = core::readObjectGroundTruth(settings_.objects);
   for (const auto& row : rows)
     if (!cocoClassId(row.category))
@@ -56,7 +61,7 @@ GroundTruthDetector::GroundTruthDetector(GroundTruthDetectorSettings settings, C
 }
 
 std::vector<core::Detection> GroundTruthDetector::detect(const core::Frame& frame) {
-  if (index_.frameCount() > 0 && (frame.t < first_t_ - 1.0 || frame.t > last_t_ + 1.0))
+  if (!feed_ && index_.frameCount() > 0 && (frame.t < first_t_ - 1.0 || frame.t > last_t_ + 1.0))
     throw DetectorError("frame " + std::to_string(frame.index) +
                         " (t = " + std::to_string(frame.t) + ") is outside the time span of '" +
                         settings_.objects + "': is it the ground truth of another sequence?");
@@ -67,8 +72,15 @@ std::vector<core::Detection> GroundTruthDetector::detect(const core::Frame& fram
   std::uniform_real_distribution<double> unit(0.0, 1.0);
 
   std::vector<core::Detection> detections;
-  for (const auto& row : index_.atTime(frame.t, settings_.time_tolerance)) {
-    const auto mapped = class_map_.lookup(*cocoClassId(row.category));
+  const std::vector<core::ObjectGroundTruthRow> rows =
+      feed_ ? feed_->atTime(frame.t, settings_.time_tolerance)
+            : index_.atTime(frame.t, settings_.time_tolerance);
+  for (const auto& row : rows) {
+    const auto coco = cocoClassId(row.category);  // a file's classes were checked when read
+    if (!coco)
+      throw DetectorError("'" + settings_.objects + "' gave class '" + row.category +
+                          "', which is not a COCO class name the class map could look up");
+    const auto mapped = class_map_.lookup(*coco);
     // Draw for every object, reported or not, so one object's fate does not shift the noise of
     // the others when settings change.
     const bool missed = unit(rng) < settings_.miss_rate;

@@ -3,10 +3,11 @@
 #include "dynslam/nav/SweptFootprint.h"
 
 #include <dynslam/core/CameraMount.h>
+#include <dynslam/system/PoseConversion.h>
 
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/math/wrap2pi.h>
-#include <mrpt/poses/CPose3D.h>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <chrono>
@@ -16,13 +17,7 @@
 namespace dynslam::nav {
 namespace {
 
-Eigen::Isometry3d toIsometry(const mrpt::math::TPose3D& p) {
-  const auto m = mrpt::poses::CPose3D(p).getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>();
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) T.matrix()(r, c) = m(r, c);
-  return T;
-}
+using system::toIsometry;
 
 double seconds(const mrpt::Clock::time_point& t) { return mrpt::Clock::toDouble(t); }
 
@@ -182,10 +177,24 @@ bool NavigationAdapter::senseObstacles(mrpt::maps::CSimplePointsMap& obstacles,
         Eigen::Vector3d(object.velocity.x, object.velocity.y, object.velocity.z);
     Footprint f;
     f.centre = centre.head<2>();
-    f.radius =
-        std::max(options_.footprint_min_radius_m, 0.5 * std::max(object.extent.x, object.extent.z));
+    const double largest = object.category == "person" ? options_.person_max_radius_m
+                                                       : options_.footprint_max_radius_m;
+    f.radius = std::clamp(0.5 * std::max(object.extent.x, object.extent.z),
+                          options_.footprint_min_radius_m,
+                          std::max(largest, options_.footprint_min_radius_m));
     f.top = centre.z() + 0.5 * object.extent.y;
-    const bool moving = v.head<2>().norm() >= options_.moving_speed_m_s;
+    bool moving = v.head<2>().norm() >= options_.moving_speed_m_s;
+    if (object.cov) {  // the velocity block, turned into the navigation frame
+      Eigen::Matrix3d cv;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) cv(r, c) = (*object.cov)(3 + r, 3 + c);
+      const Eigen::Matrix2d horizontal =
+          (T_nav_map.linear() * cv * T_nav_map.linear().transpose()).topLeftCorner<2, 2>();
+      const double largest =
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(horizontal).eigenvalues().maxCoeff();
+      if (!(largest <= options_.max_velocity_sigma_m_s * options_.max_velocity_sigma_m_s))
+        moving = false;
+    }
     if (moving) f.velocity = v.head<2>();
     appendSweptFootprint(f, moving ? options_.obstacle_horizon_s : 0.0, sampling, swept);
   }

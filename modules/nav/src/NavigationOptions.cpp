@@ -34,8 +34,16 @@ void NavigationOptions::describe(core::OptionVisitor& v) {
         "long (0: its current footprint only)");
   v.key("moving_speed_m_s", moving_speed_m_s, Range::atLeast(0),
         "m/s; objects slower than this on the floor get their current footprint only");
+  v.key("max_velocity_sigma_m_s", max_velocity_sigma_m_s, Range::above(0),
+        "m/s; an object whose velocity is this unsure (the larger horizontal sigma, with a "
+        "covariance) gets its current footprint only");
   v.key("footprint_min_radius_m", footprint_min_radius_m, Range::above(0),
         "m; a footprint's radius at least (else half the object's larger horizontal extent)");
+  v.key("person_max_radius_m", person_max_radius_m, Range::above(0),
+        "m; a person's footprint radius at most (an extent measured too wide, two bodies in one "
+        "box, must not wall off the robot's way)");
+  v.key("footprint_max_radius_m", footprint_max_radius_m, Range::above(0),
+        "m; any other object's (a car's) footprint radius at most");
   v.key("footprint_spacing_m", footprint_spacing_m, Range::above(0),
         "m; between a footprint's points on its ring and between rings along the sweep");
   v.key("footprint_height_step_m", footprint_height_step_m, Range::above(0),

@@ -4,8 +4,8 @@
 #include <dynslam/core/CameraMount.h>
 #include <dynslam/nav/EstimateSource.h>
 
+#include <dynslam/system/PoseConversion.h>
 #include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Geometry>
 
@@ -13,12 +13,7 @@
 
 namespace dynslam::nav::testing {
 
-inline mrpt::math::TPose3D toTPose3D(const Eigen::Isometry3d& T) {
-  mrpt::math::CMatrixDouble44 m;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
-  return mrpt::poses::CPose3D(m).asTPose();
-}
+using system::toTPose3D;
 
 inline Eigen::Isometry3d planarPose(double x, double y, double yaw) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();

@@ -43,10 +43,8 @@ ImuKinematics imuKinematicsAt(const TrajectorySample& body, const Eigen::Isometr
   return out;
 }
 
-std::vector<ImuMeasurement> synthesizeImu(const SplineTrajectory& trajectory, double t0, double t1,
-                                          const ImuNoiseOptions& options,
-                                          const Eigen::Isometry3d& T_body_imu,
-                                          std::mt19937_64& rng) {
+ImuNoiseProcess::ImuNoiseProcess(const ImuNoiseOptions& options, std::mt19937_64& rng)
+    : options_(options), rng_(rng) {
   requireNonNegative(options.gyro_noise_density, "gyro_noise_density");
   requireNonNegative(options.gyro_bias_random_walk, "gyro_bias_random_walk");
   requireNonNegative(options.acc_noise_density, "acc_noise_density");
@@ -55,36 +53,47 @@ std::vector<ImuMeasurement> synthesizeImu(const SplineTrajectory& trajectory, do
       !std::isfinite(options.gravity)) {
     throw std::invalid_argument("synthesizeImu: initial biases and gravity must be finite");
   }
-  const std::vector<double> times = uniformSampleTimes(t0, t1, options.rate_hz);
-
+  if (!(options.rate_hz > 0) || !std::isfinite(options.rate_hz))
+    throw std::invalid_argument("synthesizeImu: rate_hz must be > 0, got " +
+                                std::to_string(options.rate_hz));
   // Discretisation of the continuous-time densities at the sample period (Kalibr's convention):
   // white noise sigma_d = density / sqrt(period), bias step sigma_d = random_walk * sqrt(period).
   const double period = 1.0 / options.rate_hz;
-  const double gyro_white = options.gyro_noise_density / std::sqrt(period);
-  const double acc_white = options.acc_noise_density / std::sqrt(period);
-  const double gyro_walk = options.gyro_bias_random_walk * std::sqrt(period);
-  const double acc_walk = options.acc_bias_random_walk * std::sqrt(period);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  gyro_white_ = options.gyro_noise_density / std::sqrt(period);
+  acc_white_ = options.acc_noise_density / std::sqrt(period);
+  gyro_walk_ = options.gyro_bias_random_walk * std::sqrt(period);
+  acc_walk_ = options.acc_bias_random_walk * std::sqrt(period);
+  gyro_bias_ = options.gyro_bias0;
+  acc_bias_ = options.acc_bias0;
+}
 
+ImuMeasurement ImuNoiseProcess::measure(double t, const ImuKinematics& exact) {
+  ImuMeasurement m;
+  m.t = t;
+  m.gyro_bias = gyro_bias_;
+  m.acc_bias = acc_bias_;
+  m.gyro = exact.angular_velocity + gyro_bias_;
+  m.acc = exact.specific_force + acc_bias_;
+  if (options_.noise) {
+    m.gyro += gyro_white_ * standardNormal3(normal_, rng_);
+    m.acc += acc_white_ * standardNormal3(normal_, rng_);
+    gyro_bias_ += gyro_walk_ * standardNormal3(normal_, rng_);
+    acc_bias_ += acc_walk_ * standardNormal3(normal_, rng_);
+  }
+  return m;
+}
+
+std::vector<ImuMeasurement> synthesizeImu(const SplineTrajectory& trajectory, double t0, double t1,
+                                          const ImuNoiseOptions& options,
+                                          const Eigen::Isometry3d& T_body_imu,
+                                          std::mt19937_64& rng) {
+  ImuNoiseProcess sensor(options, rng);
+  const std::vector<double> times = uniformSampleTimes(t0, t1, options.rate_hz);
   std::vector<ImuMeasurement> out;
   out.reserve(times.size());
-  Eigen::Vector3d gyro_bias = options.gyro_bias0, acc_bias = options.acc_bias0;
-  for (const double t : times) {
-    const ImuKinematics exact = imuKinematicsAt(trajectory.sample(t), T_body_imu, options.gravity);
-    ImuMeasurement m;
-    m.t = t;
-    m.gyro_bias = gyro_bias;
-    m.acc_bias = acc_bias;
-    m.gyro = exact.angular_velocity + gyro_bias;
-    m.acc = exact.specific_force + acc_bias;
-    if (options.noise) {
-      m.gyro += gyro_white * standardNormal3(normal, rng);
-      m.acc += acc_white * standardNormal3(normal, rng);
-      gyro_bias += gyro_walk * standardNormal3(normal, rng);
-      acc_bias += acc_walk * standardNormal3(normal, rng);
-    }
-    out.push_back(m);
-  }
+  for (const double t : times)
+    out.push_back(
+        sensor.measure(t, imuKinematicsAt(trajectory.sample(t), T_body_imu, options.gravity)));
   return out;
 }
 

@@ -128,9 +128,16 @@ size_t Simulator::frameCount() const {
 double Simulator::frameTime(size_t index) const { return index / options_.world.fps; }
 
 void Simulator::renderFrame(size_t index, SimFrame& out) const {
+  const double t = frameTime(index);
+  renderAt(t, trajectory_->sample(t).T_world_body * T_body_camera_, index, out);
   out.index = index;
-  out.t = frameTime(index);
-  out.T_world_camera = trajectory_->sample(out.t).T_world_body * T_body_camera_;
+}
+
+void Simulator::renderAt(double t, const Eigen::Isometry3d& T_world_camera, size_t noise_index,
+                         SimFrame& out) const {
+  out.index = noise_index;
+  out.t = t;
+  out.T_world_camera = T_world_camera;
 
   Mesh mesh = scene_.static_mesh;
   std::vector<Mesh> agentMeshes(scene_.agents.size());
@@ -149,7 +156,7 @@ void Simulator::renderFrame(size_t index, SimFrame& out) const {
                             out.T_world_camera, out.image.label);
   appendInIdOrder(out.objects, spriteTruths);
 
-  std::mt19937_64 noiseRng(subSeed(options_.world.seed, kFrameStreams + index));
+  std::mt19937_64 noiseRng(subSeed(options_.world.seed, kFrameStreams + noise_index));
   applyRgbdNoise(out.image, options_.noise.rgbd, noiseRng);
 }
 

@@ -1,18 +1,12 @@
 #include "SystemState.h"
 
 #include <dynslam/core/Frame.h>
+#include <dynslam/system/PoseConversion.h>
 
 #include <mrpt/poses/CPose3D.h>
 
 namespace dynslam::system {
 namespace {
-
-mrpt::math::TPose3D toTPose3D(const Eigen::Isometry3d& T) {
-  mrpt::math::CMatrixDouble44 m;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m(r, c) = T.matrix()(r, c);
-  return mrpt::poses::CPose3D(m).asTPose();
-}
 
 mrpt::math::TPoint3D toTPoint3D(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 

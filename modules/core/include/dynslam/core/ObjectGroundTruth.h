@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <iosfwd>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -51,6 +53,7 @@ class ObjectGroundTruthIndex {
  public:
   ObjectGroundTruthIndex() = default;
   explicit ObjectGroundTruthIndex(std::vector<ObjectGroundTruthRow> rows);
+  void add(ObjectGroundTruthRow row);
 
   /// The objects of frame `frame`; empty when the file lists none (nothing in view).
   const std::vector<ObjectGroundTruthRow>& byFrame(std::size_t frame) const;
@@ -65,6 +68,26 @@ class ObjectGroundTruthIndex {
   std::map<std::size_t, std::vector<ObjectGroundTruthRow>> by_frame_;
   std::map<double, std::size_t> frame_by_time_;
   static const std::vector<ObjectGroundTruthRow> kNone;
+};
+
+/// Ground truth that arrives while a run goes on: a simulator driven in closed loop renders each
+/// frame just before the system gets it, so no objects.txt exists beforehand. The program adds
+/// each frame's rows before it hands over the frame; `[Detection] objects = feed:NAME` makes the
+/// ground-truth detector read the feed registered under NAME instead of a file. Thread-safe; it
+/// keeps every row (a closed-loop run lasts minutes).
+class ObjectGroundTruthFeed {
+ public:
+  static constexpr const char* kPrefix = "feed:";
+  /// The feed registered under `name`, made on first use; the same object for the process's life.
+  static std::shared_ptr<ObjectGroundTruthFeed> named(const std::string& name);
+
+  void add(const std::vector<ObjectGroundTruthRow>& rows);
+  /// As ObjectGroundTruthIndex::atTime, a copy.
+  std::vector<ObjectGroundTruthRow> atTime(double t, double tolerance = 1e-3) const;
+
+ private:
+  mutable std::mutex mutex_;
+  ObjectGroundTruthIndex index_;
 };
 
 }  // namespace dynslam::core

@@ -9,10 +9,12 @@
 #include <dynslam/detection/Detector.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace dynslam::detection {
 
+/// `objects` names a file, or `feed:NAME` an in-process core::ObjectGroundTruthFeed.
 /// Keys, ranges, meanings: DetectionOptions::describe() in DetectionOptions.cpp;
 /// docs/parameters.md.
 struct GroundTruthDetectorSettings {
@@ -42,6 +44,9 @@ class GroundTruthDetector : public Detector {
   GroundTruthDetectorSettings settings_;
   ClassMap class_map_;
   core::ObjectGroundTruthIndex index_;
+  /// `objects = feed:NAME`: rows added while the run goes on (a closed-loop simulation), whose
+  /// classes cannot be checked up front.
+  std::shared_ptr<core::ObjectGroundTruthFeed> feed_;
   double first_t_ = 0, last_t_ = 0;
 };
 

@@ -29,8 +29,16 @@ struct NavigationOptions : core::Options {
   /// s; each moving object's footprint is swept along its constant-velocity prediction for this
   /// long (0: its current footprint only).
   double obstacle_horizon_s = 1.0;
-  double moving_speed_m_s = 0.2;         ///< objects slower than this are not swept
+  double moving_speed_m_s = 0.2;  ///< objects slower than this are not swept
+  /// m/s; an object whose speed is this unsure (the larger horizontal sigma of its velocity,
+  /// when the system gives a covariance) is not swept: a state just made, or one the filter
+  /// cannot follow, would sweep its footprint the wrong way.
+  double max_velocity_sigma_m_s = 0.5;
   double footprint_min_radius_m = 0.25;  ///< a footprint's radius at least (else half its width)
+  /// At most: a person's (a wrong extent, two bodies in one box, must not wall off the room)
+  /// and any other object's (a car's).
+  double person_max_radius_m = 0.4;
+  double footprint_max_radius_m = 2.5;
   double footprint_spacing_m = 0.1;      ///< points on a footprint's ring, rings along the sweep
   double footprint_height_step_m = 0.3;  ///< a footprint's points repeat every this much up
   /// s; the robot's velocity comes from its last two poses when they are at most this far apart

@@ -48,6 +48,25 @@ struct ImuKinematics {
 ImuKinematics imuKinematicsAt(const TrajectorySample& body, const Eigen::Isometry3d& T_body_imu,
                               double gravity);
 
+/// The sensor: what it reports for the exact motion at each sample, with white noise and biases
+/// that walk (the model and the draw order of synthesizeImu below). For motion known one sample
+/// at a time (a robot driven in closed loop). Throws std::invalid_argument for a bad rate or a
+/// negative noise parameter.
+class ImuNoiseProcess {
+ public:
+  /// `rng` must outlive the process; it is drawn from at each measure() with noise on.
+  ImuNoiseProcess(const ImuNoiseOptions& options, std::mt19937_64& rng);
+  /// The report at t of the exact motion; the biases step after it.
+  ImuMeasurement measure(double t, const ImuKinematics& exact);
+
+ private:
+  ImuNoiseOptions options_;
+  std::mt19937_64& rng_;
+  std::normal_distribution<double> normal_{0.0, 1.0};
+  double gyro_white_ = 0, acc_white_ = 0, gyro_walk_ = 0, acc_walk_ = 0;
+  Eigen::Vector3d gyro_bias_ = Eigen::Vector3d::Zero(), acc_bias_ = Eigen::Vector3d::Zero();
+};
+
 /// Samples at uniformSampleTimes(t0, t1, options.rate_hz) (t0, t0 + 1/rate, ... <= t1).
 /// T_body_imu is the IMU's pose in the body frame (the body of the trajectory); the
 /// measurements are in the IMU frame. Sample k reports

@@ -22,6 +22,12 @@ class Simulator : public Sequence {
   size_t frameCount() const override;
   double frameTime(size_t index) const override;
   void renderFrame(size_t index, SimFrame& out) const override;
+  /// The scene at time t (s since the start) seen from any camera pose (a robot driven in
+  /// closed loop, not the scenario's path); the depth noise is that of frame `noise_index`.
+  void renderAt(double t, const Eigen::Isometry3d& T_world_camera, size_t noise_index,
+                SimFrame& out) const;
+  /// The scene's static surfaces (walls, floor, furniture), world frame.
+  const Mesh& staticMesh() const { return scene_.static_mesh; }
   const core::CameraIntrinsics& camera() const override { return camera_; }
   const std::vector<ImuMeasurement>& imu() const override { return imu_; }
   const std::vector<GnssFixSample>& gnss() const override { return gnss_; }
