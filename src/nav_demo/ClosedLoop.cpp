@@ -189,6 +189,7 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
     }
     system::SystemSettings systemSettings;
     systemSettings.synchronous = true;
+    systemSettings.map_update_min_frames = s.demo.map_min_frames;
     slam = std::make_unique<system::System>(s.demo.slam_config, overrides, systemSettings);
     slamSource = std::make_unique<nav::SystemEstimateSource>(*slam);
   } else {

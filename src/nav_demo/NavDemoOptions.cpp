@@ -52,6 +52,10 @@ void NavDemoOptions::describe(core::OptionVisitor& v) {
         "m; a person's body for contacts and the minimum distance");
   v.key("collision_distance_m", collision_distance_m, Range::atLeast(0),
         "m; the robot's outline closer than this to a body or a static obstacle is a contact");
+  v.key("map_min_frames", map_min_frames, Range::atLeast(1),
+        "the static map the navigator senses keeps points seen in at least this many of the "
+        "frames the map took (one in ten): a person's pixels a missed detection let in are "
+        "seen once (System's map_update_min_frames)");
   v.key("moving_speed_m_s", moving_speed_m_s, Range::atLeast(0),
         "m/s; a contact while the robot is faster counts as a collision");
 }

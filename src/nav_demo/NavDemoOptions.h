@@ -36,6 +36,9 @@ struct NavDemoOptions : core::Options {
   double person_radius_m = 0.25;  ///< a body's radius for contacts and the minimum distance
   double collision_distance_m = 0.2;
   double moving_speed_m_s = 0.05;  ///< the robot counts as moving above this
+  /// The static map the navigator gets keeps voxels seen in at least this many of the frames
+  /// the map took (every 10th): people's pixels a missed detection let in come from one.
+  int map_min_frames = 3;
 
   void describe(core::OptionVisitor& v) override;
 };

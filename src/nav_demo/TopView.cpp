@@ -3,6 +3,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,6 +51,8 @@ cv::Mat TopView::background() const {
 void TopView::add(const TopViewState& s) {
   true_path_.push_back(pixel(s.robot.head<2>()));
   if (s.estimated_valid) estimated_path_.push_back(pixel(s.estimated.head<2>()));
+  people_paths_.resize(std::max(people_paths_.size(), s.people.size()));
+  for (std::size_t i = 0; i < s.people.size(); ++i) people_paths_[i].push_back(pixel(s.people[i]));
   if (!video_.isOpened()) return;
   cv::Mat img = base_.clone();
   for (const auto& o : s.obstacles) cv::circle(img, pixel(o), 2, kObstacle, -1);
@@ -75,12 +78,14 @@ void TopView::add(const TopViewState& s) {
 
 void TopView::writeSummary(const std::string& png, const std::vector<bool>& reached) const {
   cv::Mat img = base_.clone();
+  for (const auto& path : people_paths_) cv::polylines(img, path, false, kObstacle, 1);
   for (std::size_t i = 0; i < goals_.size() && i < reached.size(); ++i)
     cv::circle(img, pixel(goals_[i]), 12, reached[i] ? kTrue : kPerson, 2);
   cv::polylines(img, true_path_, false, kTrue, 2);
   if (!estimated_path_.empty()) cv::polylines(img, estimated_path_, false, kEstimated, 1);
   cv::putText(img, "true path", {10, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, kTrue, 2);
   cv::putText(img, "estimated path", {10, 46}, cv::FONT_HERSHEY_SIMPLEX, 0.6, kEstimated, 2);
+  cv::putText(img, "people", {10, 68}, cv::FONT_HERSHEY_SIMPLEX, 0.6, kPerson, 2);
   if (!cv::imwrite(png, img)) throw std::runtime_error("cannot write '" + png + "'");
 }
 

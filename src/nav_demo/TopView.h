@@ -32,7 +32,8 @@ class TopView {
   TopView(const StaticFootprint& statics, std::vector<Eigen::Vector2d> goals,
           const std::string& video, double fps);
   void add(const TopViewState& state);
-  /// The paths so far over the static map and the goals (reached green, missed red).
+  /// The paths so far over the static map and the goals (reached green, missed red), the
+  /// people's paths faint red.
   void writeSummary(const std::string& png, const std::vector<bool>& reached) const;
 
  private:
@@ -45,6 +46,7 @@ class TopView {
   cv::Mat base_;
   cv::VideoWriter video_;
   std::vector<cv::Point> true_path_, estimated_path_;
+  std::vector<std::vector<cv::Point>> people_paths_;  // by the order of TopViewState::people
 };
 
 }  // namespace dynslam::navdemo

@@ -53,6 +53,7 @@ struct System::Impl {
       options.voxel_size = settings.map_voxel_size;
       options.max_points = settings.map_max_points;
       options.max_track_points = settings.map_max_track_points;
+      options.min_frames = settings.map_update_min_frames;
       map.emplace(options);
     }
   }

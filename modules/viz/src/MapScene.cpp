@@ -142,6 +142,10 @@ void MapSceneBuilder::addStaticPoints(const core::Frame& f) {
         voxel.bgr_sum += Eigen::Vector3f::Constant(160.f);
       }
       ++voxel.count;
+      if (voxel.last_update != static_updates_) {
+        voxel.last_update = static_cast<std::uint32_t>(static_updates_);
+        ++voxel.frames;
+      }
     }
   }
 }
@@ -157,10 +161,12 @@ void MapSceneBuilder::save(const std::string& path) const {
 
 namespace {
 
-/// Each voxel's point: its mean position and mean colour (r, g, b in [0, 1]), in map order.
+/// Each voxel's point: its mean position and mean colour (r, g, b in [0, 1]), in map order; only
+/// voxels hit in at least `min_frames` frames.
 template <class Voxels, class Add>
-void forEachVoxelPoint(const Voxels& voxels, Add&& add) {
+void forEachVoxelPoint(const Voxels& voxels, int min_frames, Add&& add) {
   for (const auto& [key, voxel] : voxels) {
+    if (static_cast<int>(voxel.frames) < min_frames) continue;
     const Eigen::Vector3f p = voxel.position_sum / static_cast<float>(voxel.count);
     const Eigen::Vector3f bgr = voxel.bgr_sum / (255.f * static_cast<float>(voxel.count));
     add(p, bgr.z(), bgr.y(), bgr.x());
@@ -172,9 +178,10 @@ void forEachVoxelPoint(const Voxels& voxels, Add&& add) {
 std::shared_ptr<mrpt::maps::CColouredPointsMap> MapSceneBuilder::staticPoints() const {
   auto map = std::make_shared<mrpt::maps::CColouredPointsMap>();
   map->reserve(voxels_.size());
-  forEachVoxelPoint(voxels_, [&](const Eigen::Vector3f& p, float r, float g, float b) {
-    map->insertPointRGB(p.x(), p.y(), p.z(), r, g, b);
-  });
+  forEachVoxelPoint(voxels_, options_.min_frames,
+                    [&](const Eigen::Vector3f& p, float r, float g, float b) {
+                      map->insertPointRGB(p.x(), p.y(), p.z(), r, g, b);
+                    });
   return map;
 }
 
@@ -183,7 +190,7 @@ void MapSceneBuilder::fill(mrpt::opengl::COpenGLScene& scene) const {
   cloud->setName(kStaticMapName);
   cloud->setPointSize(2.0f);
   cloud->reserve(voxels_.size());
-  forEachVoxelPoint(voxels_, [&](const Eigen::Vector3f& p, float r, float g, float b) {
+  forEachVoxelPoint(voxels_, 1, [&](const Eigen::Vector3f& p, float r, float g, float b) {
     cloud->push_back(p.x(), p.y(), p.z(), r, g, b);
   });
   scene.insert(cloud);

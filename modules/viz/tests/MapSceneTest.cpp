@@ -4,6 +4,7 @@
 #include <dynslam/viz/MapScene.h>
 
 #include <gtest/gtest.h>
+#include <mrpt/maps/CColouredPointsMap.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfLines.h>
@@ -191,4 +192,28 @@ TEST(MapScene, TheStaticMapStopsGrowingAtMaxPoints) {
   }
   EXPECT_EQ(builder.pointCount(), 50u);
   EXPECT_GT(builder.pointsRefused(), 0u);
+}
+
+// A person's pixels a missed detection let in are seen in one frame: with min_frames = 2 the map
+// subscribers get (staticPoints) leaves them out, while the wall seen twice stays; the saved
+// scene keeps both.
+TEST(MapScene, PointsSeenInOneFrameOnlyAreLeftOutOfTheSubscribersMap) {
+  viz::MapSceneOptions o = everyPixel();
+  o.min_frames = 2;
+  viz::MapSceneBuilder builder(o);
+  core::Frame first = wallFrame(0, 0.0);
+  addMaskedPerson(first);  // the left half masked in the first frame ...
+  builder.addFrame(first);
+  builder.addFrame(wallFrame(1, 0.0));  // ... and not in the second
+  const auto map = builder.staticPoints();
+  ASSERT_GT(map->size(), 100u);
+  EXPECT_LT(map->size(), builder.pointCount());  // the left half, seen once, is left out
+  for (std::size_t i = 0; i < map->size(); ++i) {
+    float x, y, z;
+    map->getPoint(i, x, y, z);
+    ASSERT_GT(x, 0.05f) << "a voxel seen in one frame only, point " << i;
+  }
+  auto cloud = named<mrpt::opengl::CPointCloudColoured>(*savedScene(builder), viz::kStaticMapName);
+  ASSERT_TRUE(cloud);
+  EXPECT_EQ(cloud->size(), builder.pointCount());
 }

@@ -56,6 +56,9 @@ struct SystemSettings {
   double map_voxel_size = 0.05;
   std::size_t map_max_points = 1000000;      ///< the static map's voxels at most
   std::size_t map_max_track_points = 20000;  ///< points of each trajectory line at most
+  /// The map handed to subscribers keeps voxels seen in at least this many of the frames it
+  /// took (viz::MapSceneOptions::min_frames); a navigator wants 2-3.
+  int map_update_min_frames = 1;
   /// Called on the processing thread before each frame enters the pipeline (the dynslam
   /// program's --realtime holds a rawlog's frames back to their recorded rate here).
   std::function<void(core::Frame&)> before_frame;

@@ -47,6 +47,10 @@ struct MapSceneOptions {
   /// keeps every second point, so a long run keeps its whole extent at half the resolution
   /// (20,000 is 11 min of a 30 Hz camera at full resolution; 12 bytes a point).
   std::size_t max_track_points = 20000;
+  /// staticPoints() (what System's map subscribers get) keeps only voxels hit in at least this
+  /// many back-projected frames: a person's pixels that a missed detection let into the map come
+  /// from one frame, and a navigator would take them for a wall. The saved scene keeps all.
+  int min_frames = 1;
 };
 
 class MapSceneBuilder {
@@ -79,6 +83,8 @@ class MapSceneBuilder {
     Eigen::Vector3f position_sum = Eigen::Vector3f::Zero();
     Eigen::Vector3f bgr_sum = Eigen::Vector3f::Zero();
     std::uint32_t count = 0;
+    std::uint32_t frames = 0;       // back-projected frames that hit it
+    std::uint32_t last_update = 0;  // static_updates_ when it was last hit
   };
   void addStaticPoints(const core::Frame& frame);
   void appendToTrack(std::vector<Eigen::Vector3f>& track, const Eigen::Vector3f& point) const;
