@@ -112,22 +112,17 @@ void SimulationWriter::write(const sim::SimFrame& frame) {
   const double cameraT = calibration_.cameraStamp(frame.t, frame.index);
   writeSamplesUpTo(cameraT);
   const auto& k = sim_.camera();
-  RgbdFrame rgbd;
-  rgbd.timestamp = mrpt::Clock::fromDouble(stamp(cameraT));
-  rgbd.sensorLabel = kRgbdLabel;
   const auto within = [&](long first, long count) {
     return first >= 0 && long(frame.index) >= first && long(frame.index) < first + count;
   };
-  frame.image.depth.convertTo(rgbd.depth, CV_16UC1, 1000.0);  // mm; 0 stays invalid
-  if (within(faults_.no_depth_first, faults_.no_depth_count)) rgbd.depth.setTo(0);
   const cv::Mat colour = within(faults_.black_first, faults_.black_count)
                              ? cv::Mat::zeros(frame.image.rgb.size(), frame.image.rgb.type())
                              : frame.image.rgb;
-  rgbd.rangeUnits = 0.001f;
-  rgbd.maxRange = static_cast<float>(sim_.maxRange());
-  rgbd.intrinsics = {k.fx, k.fy, k.cx, k.cy};
-  rgbd.colour = images_.storePixels(colour, "colour_" + frameName(frame.index));
-  rgbd.depthSourceName = "simulated frame " + std::to_string(frame.index);
+  RgbdFrame rgbd = simulatedRgbdFrame(
+      mrpt::Clock::fromDouble(stamp(cameraT)), frame.image.depth, sim_.maxRange(),
+      {k.fx, k.fy, k.cx, k.cy}, images_.storePixels(colour, "colour_" + frameName(frame.index)),
+      "simulated frame " + std::to_string(frame.index));
+  if (within(faults_.no_depth_first, faults_.no_depth_count)) rgbd.depth.setTo(0);
   const auto obs = makeRgbdObservation(rgbd);
   setCameraPoseOnBody(*obs, believed_T_body_camera_);
   rawlog_.write(*obs);

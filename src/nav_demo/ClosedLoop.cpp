@@ -9,6 +9,7 @@
 #include <dynslam/core/ObjectGroundTruth.h>
 #include <dynslam/core/TrajectoryFile.h>
 #include <dynslam/nav/NavigationAdapter.h>
+#include <dynslam/nav/PlanarPose.h>
 #include <dynslam/nav/SlamRobotInterface.h>
 #include <dynslam/nav/SystemEstimateSource.h>
 #include <dynslam/rawlog_tools/ColourImageStore.h>
@@ -40,16 +41,8 @@ namespace {
 namespace fs = std::filesystem;
 using WallClock = std::chrono::steady_clock;
 
-Eigen::Isometry3d planar(const Eigen::Vector3d& xyYaw) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::AngleAxisd(xyYaw.z(), Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T.translation() << xyYaw.x(), xyYaw.y(), 0;
-  return T;
-}
-
-Eigen::Vector3d planarOf(const Eigen::Isometry3d& T) {
-  return {T.translation().x(), T.translation().y(), std::atan2(T.linear()(1, 0), T.linear()(0, 0))};
-}
+using nav::planarOf;
+using nav::planarPose;
 
 double microseconds(WallClock::duration d) {
   return std::chrono::duration<double, std::micro>(d).count();
@@ -207,7 +200,7 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
   navigator.initialize();
 
   // Goals in the navigation frame: the robot's base at its start.
-  const Eigen::Isometry3d T_world_start = planar(s.start);
+  const Eigen::Isometry3d T_world_start = planarPose(s.start);
   for (const auto& g : s.goals) result.goals.push_back({g});
   const auto navigateTo = [&](std::size_t i) {
     const Eigen::Vector3d g =
@@ -236,6 +229,17 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
   double goalStart = 0, nextFrame = 0, nextControl = 0;
   double reachedAt = -1;  // when the true position first came within the tolerance (< 0: not yet)
   const auto cameraPose = [&] { return motion.sample().T_world_body * T_body_camera; };
+  const auto distanceToGoal = [&] {
+    return (motion.sample().T_world_body.translation().head<2>() - s.goals[goal]).norm();
+  };
+  // Records the goal in hand as ended at t.
+  const auto endGoal = [&](double t) {
+    auto& r = result.goals[goal];
+    r.reached = reachedAt >= 0;
+    r.time_s = (reachedAt >= 0 ? reachedAt : t) - goalStart;
+    r.final_distance_m = distanceToGoal();
+    reachedAt = -1;
+  };
 
   for (double t = 0; t < endT && goal < s.goals.size(); t = motion.t()) {
     // The IMU sample at t, then the frame at t (the order a rawlog keeps).
@@ -261,17 +265,11 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
             rows.push_back(sim::groundTruthRow(frameIndex, stamp(t), o));
           feed->add(rows);
         }
-        rawlog_tools::RgbdFrame rgbd;
-        rgbd.timestamp = mrpt::Clock::fromDouble(stamp(t));
-        rgbd.sensorLabel = rawlog_tools::kRgbdLabel;
-        frame.image.depth.convertTo(rgbd.depth, CV_16UC1, 1000.0);
-        rgbd.rangeUnits = 0.001f;
-        rgbd.maxRange = static_cast<float>(world.maxRange());
         const auto& k = world.camera();
-        rgbd.intrinsics = {k.fx, k.fy, k.cx, k.cy};
-        rgbd.colour = images.storePixels(frame.image.rgb, "");
-        rgbd.depthSourceName = "closed-loop frame " + std::to_string(frameIndex);
-        auto obs = rawlog_tools::makeRgbdObservation(rgbd);
+        auto obs = rawlog_tools::makeRgbdObservation(rawlog_tools::simulatedRgbdFrame(
+            mrpt::Clock::fromDouble(stamp(t)), frame.image.depth, world.maxRange(),
+            {k.fx, k.fy, k.cx, k.cy}, images.storePixels(frame.image.rgb, ""),
+            "closed-loop frame " + std::to_string(frameIndex)));
         rawlog_tools::setCameraPoseOnBody(*obs, T_body_camera);
         slam->onNewObservation(obs);
       } else {
@@ -288,7 +286,7 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
       std::string frameId;
       if (adapter.getCurrentPoseAndSpeeds(pose, velocity, poseStamp, odometry, frameId))
         result.estimated_base.push_back(
-            {stamp(t), T_world_start * planar({pose.x, pose.y, pose.phi})});
+            {stamp(t), T_world_start * planarPose(pose.x, pose.y, pose.phi)});
       const Eigen::Vector2d robotXy = T_world_base.translation().head<2>();
       const bool moving = std::abs(motion.speed()) > s.demo.moving_speed_m_s;
       for (const auto& agent : world.agents()) {
@@ -309,7 +307,6 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
 
     if (t >= nextControl - 1e-9) {
       nextControl += controlDt;
-      const Eigen::Vector2d robotXy = motion.sample().T_world_body.translation().head<2>();
       // The first goal after the wait, each next one once the robot has come to rest at the
       // last (as a robot with a list of goals does).
       const bool atRest = std::abs(motion.speed()) < 0.02 && std::abs(motion.turnRate()) < 0.02;
@@ -320,18 +317,13 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
       }
       if (navigating) {
         navigator.navigationStep();
-        const double d = (robotXy - s.goals[goal]).norm();
-        if (d <= s.demo.goal_tolerance_m && reachedAt < 0) reachedAt = t;
+        if (distanceToGoal() <= s.demo.goal_tolerance_m && reachedAt < 0) reachedAt = t;
         const auto state = navigator.getCurrentState();
         // A goal ends when the navigator has stopped at it (by its own estimate) or the time is
         // up; it counts as reached when the true position came within the tolerance in time.
         if (state == mrpt::nav::CAbstractNavigator::IDLE ||
             t - goalStart > s.demo.goal_time_limit_s) {
-          auto& r = result.goals[goal];
-          r.reached = reachedAt >= 0;
-          r.time_s = (reachedAt >= 0 ? reachedAt : t) - goalStart;
-          r.final_distance_m = d;
-          reachedAt = -1;
+          endGoal(t);
           navigator.cancel();
           motion.command(0, 0);
           navigating = false;
@@ -356,7 +348,7 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
       }
       // The sensed points are in the robot's frame as the adapter saw it (its estimate).
       const Eigen::Isometry3d T_world_sensed =
-          v.estimated_valid ? planar(v.estimated) : planar(v.robot);
+          v.estimated_valid ? planarPose(v.estimated) : planarPose(v.robot);
       for (const auto& p : robot.sensed())
         v.obstacles.push_back((T_world_sensed * Eigen::Vector3d(p.x(), p.y(), 0)).head<2>());
       view.add(v);
@@ -364,13 +356,7 @@ ClosedLoopResult runClosedLoop(const NavScenario& s, const sim::ScenarioOptions&
     }
     motion.step(imuDt);
   }
-  if (goal < s.goals.size() && navigating) {  // the run's time ran out during this goal
-    auto& r = result.goals[goal];
-    r.reached = reachedAt >= 0;
-    r.time_s = (reachedAt >= 0 ? reachedAt : motion.t()) - goalStart;
-    r.final_distance_m =
-        (motion.sample().T_world_body.translation().head<2>() - s.goals[goal]).norm();
-  }
+  if (goal < s.goals.size() && navigating) endGoal(motion.t());  // the run's time ran out
   if (slam) slam->flush();
   result.duration_s = motion.t();
   result.frames = frameIndex;

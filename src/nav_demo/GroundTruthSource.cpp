@@ -39,9 +39,7 @@ void GroundTruthSource::update(double t, double stamp, const Eigen::Isometry3d& 
   u.timestamp = mrpt::Clock::fromDouble(stamp);
   u.pose = toTPose3D(T_world_camera);
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!poses_.first) poses_.first = u;
-  poses_.previous = poses_.latest;
-  poses_.latest = u;
+  poses_.add(u);
   t_ = t;
   stamp_ = stamp;
 }

@@ -1,5 +1,6 @@
 #include "dynslam/nav/NavigationAdapter.h"
 
+#include "dynslam/nav/PlanarPose.h"
 #include "dynslam/nav/SweptFootprint.h"
 
 #include <dynslam/core/CameraMount.h>
@@ -21,11 +22,6 @@ using system::toIsometry;
 
 double seconds(const mrpt::Clock::time_point& t) { return mrpt::Clock::toDouble(t); }
 
-/// x, y, yaw of a pose whose z axis is (nearly) up.
-Eigen::Vector3d planar(const Eigen::Isometry3d& T) {
-  return {T.translation().x(), T.translation().y(), std::atan2(T.linear()(1, 0), T.linear()(0, 0))};
-}
-
 /// A cell of the static thinning grid: x, y cells and a height band, packed.
 std::uint64_t cellKey(const Eigen::Vector3f& p, double cell, double band) {
   const auto ix = static_cast<std::int64_t>(std::floor(p.x() / cell)) & 0x1fffff;
@@ -45,29 +41,30 @@ NavigationAdapter::NavigationAdapter(const EstimateSource& source, const Navigat
                        .inverse();
 }
 
+Eigen::Isometry3d NavigationAdapter::navigationFrame(
+    const system::LocalizationUpdate& first) const {
+  return (toIsometry(first.pose) * T_camera_base_).inverse();
+}
+
 std::optional<Eigen::Isometry3d> NavigationAdapter::mapToNavigation() const {
   const auto first = source_.cameraPoses().first;
   if (!first) return std::nullopt;
-  return Eigen::Isometry3d((toIsometry(first->pose) * T_camera_base_).inverse());
-}
-
-Eigen::Isometry3d NavigationAdapter::baseInNavigation(const Eigen::Isometry3d& T_map_camera) const {
-  const auto T_nav_map = mapToNavigation();
-  return (T_nav_map ? *T_nav_map : Eigen::Isometry3d::Identity()) * T_map_camera * T_camera_base_;
+  return navigationFrame(*first);
 }
 
 std::optional<NavigationAdapter::Robot> NavigationAdapter::robot(const CameraPoses& poses) const {
   if (!poses.first || !poses.latest) return std::nullopt;
-  const Eigen::Isometry3d T_nav_map = (toIsometry(poses.first->pose) * T_camera_base_).inverse();
   Robot r;
-  r.pose = planar(T_nav_map * toIsometry(poses.latest->pose) * T_camera_base_);
+  r.T_nav_map = navigationFrame(*poses.first);
+  const Eigen::Isometry3d& T_nav_map = r.T_nav_map;
+  r.pose = planarOf(T_nav_map * toIsometry(poses.latest->pose) * T_camera_base_);
   r.timestamp = poses.latest->timestamp;
   r.velocity = mrpt::math::TTwist2D(0, 0, 0);
   if (poses.previous) {
     const double dt = seconds(poses.latest->timestamp) - seconds(poses.previous->timestamp);
     if (dt > 0 && dt <= options_.max_pose_gap_s) {
       const Eigen::Vector3d before =
-          planar(T_nav_map * toIsometry(poses.previous->pose) * T_camera_base_);
+          planarOf(T_nav_map * toIsometry(poses.previous->pose) * T_camera_base_);
       r.velocity.vx = (r.pose.x() - before.x()) / dt;
       r.velocity.vy = (r.pose.y() - before.y()) / dt;
       r.velocity.omega = mrpt::math::wrapToPi(r.pose.z() - before.z()) / dt;
@@ -140,10 +137,9 @@ const std::vector<Eigen::Vector3f>& NavigationAdapter::staticPoints(
 bool NavigationAdapter::senseObstacles(mrpt::maps::CSimplePointsMap& obstacles,
                                        mrpt::system::TTimeStamp& timestamp) const {
   if (source_.status() != system::TrackingStatus::Tracking) return false;
-  const CameraPoses poses = source_.cameraPoses();
-  const auto r = robot(poses);
+  const auto r = robot(source_.cameraPoses());
   if (!r) return false;
-  const Eigen::Isometry3d T_nav_map = (toIsometry(poses.first->pose) * T_camera_base_).inverse();
+  const Eigen::Isometry3d& T_nav_map = r->T_nav_map;
 
   // Navigation frame -> robot frame (planar; z stays the height above the floor).
   const float c = static_cast<float>(std::cos(r->pose.z())),

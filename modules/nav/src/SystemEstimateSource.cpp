@@ -9,9 +9,7 @@ namespace dynslam::nav {
 SystemEstimateSource::SystemEstimateSource(system::System& system) : system_(system) {
   system.subscribeToLocalization([this](const system::LocalizationUpdate& u) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!poses_.first) poses_.first = u;
-    poses_.previous = poses_.latest;
-    poses_.latest = u;
+    poses_.add(u);
   });
   system.subscribeToMapUpdates([this](const system::MapUpdate& u) {
     auto points = std::dynamic_pointer_cast<const mrpt::maps::CPointsMap>(u.map);

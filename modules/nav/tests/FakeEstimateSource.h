@@ -3,6 +3,7 @@
 // navigation frame (the robot's base at the first pose) through a map frame of any orientation.
 #include <dynslam/core/CameraMount.h>
 #include <dynslam/nav/EstimateSource.h>
+#include <dynslam/nav/PlanarPose.h>
 
 #include <dynslam/system/PoseConversion.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -15,12 +16,7 @@ namespace dynslam::nav::testing {
 
 using system::toTPose3D;
 
-inline Eigen::Isometry3d planarPose(double x, double y, double yaw) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T.translation() = Eigen::Vector3d(x, y, 0);
-  return T;
-}
+using nav::planarPose;
 
 class FakeEstimateSource : public EstimateSource {
  public:
@@ -39,9 +35,7 @@ class FakeEstimateSource : public EstimateSource {
     system::LocalizationUpdate u;
     u.timestamp = mrpt::Clock::fromDouble(t);
     u.pose = toTPose3D(T_nav_map_.inverse() * T_nav_base * T_base_camera_);
-    if (!poses_.first) poses_.first = u;
-    poses_.previous = poses_.latest;
-    poses_.latest = u;
+    poses_.add(u);
   }
   /// A person centred at `centre` (navigation frame) moving at `velocity`.
   void personAt(const Eigen::Vector3d& centre, const Eigen::Vector3d& velocity) {

@@ -1,6 +1,7 @@
 #include "dynslam/rawlog_tools/ObservationBuilders.h"
 
 #include "dynslam/rawlog_tools/ConversionError.h"
+#include "dynslam/rawlog_tools/SensorLabels.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
@@ -53,6 +54,21 @@ void setCameraPoseOnBody(mrpt::obs::CObservation3DRangeScan& obs,
 
 void setImuPoseOnBody(mrpt::obs::CObservationIMU& obs, const Eigen::Isometry3d& T_body_imu) {
   obs.sensorPose = toPose(T_body_imu);
+}
+
+RgbdFrame simulatedRgbdFrame(mrpt::Clock::time_point timestamp, const cv::Mat& depthMetres,
+                             double maxRange, const PinholeIntrinsics& intrinsics,
+                             StoredColourImage colour, std::string sourceName) {
+  RgbdFrame rgbd;
+  rgbd.timestamp = timestamp;
+  rgbd.sensorLabel = kRgbdLabel;
+  depthMetres.convertTo(rgbd.depth, CV_16UC1, 1000.0);  // mm; 0 stays invalid
+  rgbd.rangeUnits = 0.001f;
+  rgbd.maxRange = static_cast<float>(maxRange);
+  rgbd.intrinsics = intrinsics;
+  rgbd.colour = std::move(colour);
+  rgbd.depthSourceName = std::move(sourceName);
+  return rgbd;
 }
 
 std::shared_ptr<mrpt::obs::CObservation3DRangeScan> makeRgbdObservation(const RgbdFrame& frame) {

@@ -19,6 +19,12 @@ namespace dynslam::nav {
 /// the latest give the robot's pose and velocity.
 struct CameraPoses {
   std::optional<system::LocalizationUpdate> first, previous, latest;
+  /// Takes the next pose (the first one it gets stays `first`).
+  void add(const system::LocalizationUpdate& u) {
+    if (!first) first = u;
+    previous = latest;
+    latest = u;
+  }
 };
 
 class EstimateSource {

@@ -50,12 +50,13 @@ class NavigationAdapter {
 
   /// The navigation frame in the map (nullopt before the first pose).
   std::optional<Eigen::Isometry3d> mapToNavigation() const;
-  /// The robot's base in the navigation frame for a camera pose in the map.
-  Eigen::Isometry3d baseInNavigation(const Eigen::Isometry3d& T_map_camera) const;
   const NavigationOptions& options() const { return options_; }
 
  private:
+  /// The map in the navigation frame: the robot's base at the camera's first pose.
+  Eigen::Isometry3d navigationFrame(const system::LocalizationUpdate& first) const;
   struct Robot {
+    Eigen::Isometry3d T_nav_map;
     Eigen::Vector3d pose;  // x, y, yaw in the navigation frame
     mrpt::math::TTwist2D velocity;
     mrpt::system::TTimeStamp timestamp;

@@ -48,6 +48,12 @@ struct RgbdFrame {
   std::string depthSourceName;
 };
 
+/// A simulated frame as the converters store one (sensor label RGBD): depth given in metres
+/// (CV_32FC1, 0 = none) as uint16 millimetres, one pinhole camera for both images.
+RgbdFrame simulatedRgbdFrame(mrpt::Clock::time_point timestamp, const cv::Mat& depthMetres,
+                             double maxRange, const PinholeIntrinsics& intrinsics,
+                             StoredColourImage colour, std::string sourceName);
+
 /// range_is_depth = true, hasRangeImage = hasIntensityImage = true, cameraParams and
 /// cameraParamsIntensity carry the depth and the colour intrinsics (the same unless
 /// colourIntrinsics is set) and their image sizes; relativePoseIntensityWRTDepth keeps MRPT's
